@@ -1,0 +1,239 @@
+package io.orchard.protocol.client;
+
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.ProtocolException;
+import io.orchard.protocol.ProtocolVersion;
+import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.Reply;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.Role;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.time.Duration;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongFunction;
+
+/**
+ * A client's connection to an Orchard server, on the JDK alone: a socket, the line framing, one
+ * reader thread that hands every server message to a {@link Listener}, and sends that number each
+ * message with the next {@code seq}.
+ *
+ * <p>{@link #connect} performs the handshake before it returns: it sends {@code Hello} and waits for
+ * {@code Welcome}. Sending is thread-safe. The listener is called on the reader thread, one message
+ * at a time, in the order the server sent them; it should hand long work to another thread.
+ *
+ * <pre>{@code
+ * try (ProtocolConnection connection = ProtocolConnection.connect("localhost", 7557, Role.AGENT,
+ *         "my-agent", message -> System.out.println(message))) {
+ *     connection.request(seq -> new RegisterMessage(seq, "Guppy", body, null)).get();
+ * }
+ * }</pre>
+ */
+public final class ProtocolConnection implements AutoCloseable {
+
+    /** Receives what the server sends, on the connection's reader thread. */
+    @FunctionalInterface
+    public interface Listener {
+
+        /** A message from the server (replies included: they also complete their {@link #request}). */
+        void onMessage(ServerMessage message);
+
+        /**
+         * The connection closed: {@code cause} is null after {@link #close()} or a clean end of the
+         * stream, otherwise what went wrong.
+         */
+        default void onClosed(Throwable cause) {}
+    }
+
+    private static final Duration HANDSHAKE_TIMEOUT = Duration.ofSeconds(10);
+
+    private final Socket socket;
+    private final OutputStream out;
+    private final MessageCodec codec;
+    private final Listener listener;
+    private final AtomicLong nextSeq = new AtomicLong(1);
+    private final Map<Long, CompletableFuture<Reply>> pending = new ConcurrentHashMap<>();
+    private final AtomicBoolean closed = new AtomicBoolean();
+    private final CompletableFuture<WelcomeMessage> welcome = new CompletableFuture<>();
+    private final Thread readerThread;
+
+    private ProtocolConnection(Socket socket, MessageCodec codec, Listener listener) throws IOException {
+        this.socket = socket;
+        this.out = new BufferedOutputStream(socket.getOutputStream(), 16 * 1024);
+        this.codec = codec;
+        this.listener = listener;
+        this.readerThread = new Thread(this::readLoop, "orchard-connection-" + socket.getLocalPort());
+        this.readerThread.setDaemon(true);
+    }
+
+    /**
+     * Connects to a server and performs the handshake.
+     *
+     * @param host       the server's host name or address
+     * @param port       the server's port
+     * @param role       what this client is: an agent control client or a viewer
+     * @param clientName a name for this program, for the server's logs
+     * @param listener   receives every server message after the welcome
+     * @return the open connection
+     * @throws IOException when the server cannot be reached or refuses the handshake
+     */
+    public static ProtocolConnection connect(String host, int port, Role role, String clientName, Listener listener)
+            throws IOException {
+        return connect(host, port, role, clientName, null, listener);
+    }
+
+    /**
+     * Connects to a server that requires a token and performs the handshake.
+     *
+     * @param token the server's shared secret, or null when it requires none
+     * @see #connect(String, int, Role, String, Listener)
+     */
+    public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
+                                             Listener listener) throws IOException {
+        Objects.requireNonNull(listener, "listener");
+        Socket socket = new Socket();
+        try {
+            socket.setTcpNoDelay(true);
+            socket.connect(new InetSocketAddress(host, port), (int) HANDSHAKE_TIMEOUT.toMillis());
+            ProtocolConnection connection = new ProtocolConnection(socket, new MessageCodec(), listener);
+            connection.readerThread.start();
+            connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
+            connection.awaitWelcome();
+            return connection;
+        } catch (IOException | RuntimeException e) {
+            socket.close();
+            throw e;
+        }
+    }
+
+    /** The server's welcome: the world's bounds, the tick rate, the clock mode. */
+    public WelcomeMessage welcome() {
+        return welcome.join();
+    }
+
+    /**
+     * Sends a message built with the next sequence number.
+     *
+     * @param message builds the message from its {@code seq}, e.g. {@code seq -> new MoveMessage(seq, ...)}
+     * @return the sequence number used
+     * @throws IOException when the connection is closed or writing fails
+     */
+    public long send(LongFunction<? extends ClientMessage> message) throws IOException {
+        long seq = nextSeq.getAndIncrement();
+        sendNow(message.apply(seq));
+        return seq;
+    }
+
+    /**
+     * Sends a message and returns the server's reply to it: the result, or the
+     * {@link ErrorMessage} if the server refused it.
+     */
+    public CompletableFuture<Reply> request(LongFunction<? extends ClientMessage> message) {
+        long seq = nextSeq.getAndIncrement();
+        CompletableFuture<Reply> reply = new CompletableFuture<>();
+        pending.put(seq, reply);
+        try {
+            sendNow(message.apply(seq));
+        } catch (IOException | RuntimeException e) {
+            pending.remove(seq);
+            reply.completeExceptionally(e);
+        }
+        return reply;
+    }
+
+    /** Whether the connection is still open. */
+    public boolean isOpen() {
+        return !closed.get();
+    }
+
+    /** Closes the connection; the listener hears {@code onClosed(null)}. Idempotent. */
+    @Override
+    public void close() {
+        shutdown(null);
+    }
+
+    private void sendNow(ClientMessage message) throws IOException {
+        if (closed.get()) {
+            throw new IOException("connection is closed");
+        }
+        byte[] line = codec.encodeLine(message);
+        synchronized (out) {
+            out.write(line);
+            out.flush();
+        }
+    }
+
+    private void awaitWelcome() throws IOException {
+        try {
+            welcome.get(HANDSHAKE_TIMEOUT.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.ExecutionException e) {
+            throw new IOException("handshake failed: " + e.getCause().getMessage(), e.getCause());
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new IOException("no welcome from the server within " + HANDSHAKE_TIMEOUT.toSeconds() + " s");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted during the handshake", e);
+        }
+    }
+
+    private void readLoop() {
+        Throwable failure = null;
+        try {
+            LineReader lines = new LineReader(socket.getInputStream(), MessageCodec.MAX_LARGE_LINE_BYTES);
+            byte[] line;
+            while ((line = lines.readLine()) != null) {
+                dispatch(codec.decodeServer(line));
+            }
+        } catch (IOException | ProtocolException e) {
+            failure = closed.get() ? null : e;
+        } catch (RuntimeException e) {
+            failure = e;
+        }
+        shutdown(failure);
+    }
+
+    private void dispatch(ServerMessage message) {
+        if (!welcome.isDone()) {
+            if (message instanceof WelcomeMessage hello) {
+                welcome.complete(hello);
+            } else if (message instanceof ErrorMessage error) {
+                welcome.completeExceptionally(new IOException(error.code().wireName() + ": " + error.text()));
+            }
+            return;
+        }
+        if (message instanceof Reply reply) {
+            CompletableFuture<Reply> waiting = pending.remove(reply.seq());
+            if (waiting != null) {
+                waiting.complete(reply);
+            }
+        }
+        listener.onMessage(message);
+    }
+
+    private void shutdown(Throwable cause) {
+        if (!closed.compareAndSet(false, true)) {
+            return;
+        }
+        try {
+            socket.close();
+        } catch (IOException ignored) {
+            // closing is best effort; the socket is unusable either way
+        }
+        IOException gone = new IOException("connection closed", cause);
+        welcome.completeExceptionally(gone);
+        pending.values().forEach(reply -> reply.completeExceptionally(gone));
+        pending.clear();
+        listener.onClosed(cause);
+    }
+}

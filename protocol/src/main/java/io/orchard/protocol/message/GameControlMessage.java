@@ -1,0 +1,19 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.GameCommand;
+
+/**
+ * Starts, pauses or continues the game, as a teacher at a console or a viewer would.
+ *
+ * @param seq client-chosen sequence number
+ * @param command what to do
+ */
+public record GameControlMessage(long seq,
+                                 GameCommand command) implements ClientMessage {
+
+    public GameControlMessage {
+        Checks.nonNegative(seq, "seq");
+        Checks.present(command, "command");
+    }
+}

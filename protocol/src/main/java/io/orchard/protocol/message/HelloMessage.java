@@ -1,0 +1,33 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Nullable;
+import io.orchard.protocol.value.Role;
+
+/**
+ * The first line a client sends: the protocol version it speaks and what it is. The server answers
+ * with {@link WelcomeMessage}, or with an {@link ErrorMessage} ({@code version_mismatch},
+ * {@code unauthorized}) and closes the connection.
+ *
+ * @param seq client-chosen sequence number, echoed in the reply
+ * @param protocolVersion the protocol version the client speaks (see {@code ProtocolVersion})
+ * @param role agent control client or viewer
+ * @param client a free name for the client program, for logs
+ * @param token the shared secret, when the server requires one
+ */
+public record HelloMessage(long seq,
+                           int protocolVersion,
+                           Role role,
+                           String client,
+                           @Nullable String token) implements ClientMessage {
+
+    public HelloMessage {
+        Checks.nonNegative(seq, "seq");
+        if (protocolVersion <= 0) {
+            throw new IllegalArgumentException("protocolVersion must be greater than 0, was " + protocolVersion);
+        }
+        Checks.present(role, "role");
+        Checks.text(client, "client");
+        Checks.optionalText(token, "token");
+    }
+}

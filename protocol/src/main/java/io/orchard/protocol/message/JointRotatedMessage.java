@@ -1,0 +1,25 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Rotation;
+
+/**
+ * A registered joint of an agent's model turned.
+ *
+ * @param tick the tick it happened in
+ * @param agent the agent
+ * @param joint the joint's Transform
+ * @param rotation its new rotation
+ */
+public record JointRotatedMessage(long tick,
+                                  String agent,
+                                  String joint,
+                                  Rotation rotation) implements ServerMessage {
+
+    public JointRotatedMessage {
+        Checks.nonNegative(tick, "tick");
+        Checks.name(agent, "agent");
+        Checks.name(joint, "joint");
+        Checks.present(rotation, "rotation");
+    }
+}

@@ -1,0 +1,30 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Body;
+import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Vec3;
+
+/**
+ * The answer to {@link RegisterMessage}: the agent is in the world, with the body in force (capped
+ * at the server's limits) at the place the server chose.
+ *
+ * @param seq the registration's sequence number
+ * @param agent the agent's name
+ * @param body the body in force
+ * @param position where the agent stands
+ * @param heading its heading in radians
+ */
+public record RegisteredMessage(long seq,
+                                String agent,
+                                Body body,
+                                Vec3 position,
+                                double heading) implements ServerMessage, Reply {
+
+    public RegisteredMessage {
+        Checks.nonNegative(seq, "seq");
+        Checks.name(agent, "agent");
+        Checks.present(body, "body");
+        Checks.present(position, "position");
+        Checks.finite(heading, "heading");
+    }
+}

@@ -1,0 +1,18 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Checks;
+
+/**
+ * The simulation clock: sent to every client at the start of each tick.
+ *
+ * @param tick the tick that starts
+ * @param time simulated seconds since the game started
+ */
+public record TickMessage(long tick,
+                          double time) implements ServerMessage {
+
+    public TickMessage {
+        Checks.nonNegative(tick, "tick");
+        Checks.nonNegative(time, "time");
+    }
+}

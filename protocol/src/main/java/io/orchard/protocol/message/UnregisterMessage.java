@@ -1,0 +1,18 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Checks;
+
+/**
+ * Removes the agent from the environment. Its score stays in the game's ranking.
+ *
+ * @param seq client-chosen sequence number
+ * @param agent the agent's name
+ */
+public record UnregisterMessage(long seq,
+                                String agent) implements ClientMessage {
+
+    public UnregisterMessage {
+        Checks.nonNegative(seq, "seq");
+        Checks.name(agent, "agent");
+    }
+}

@@ -1,0 +1,43 @@
+package io.orchard.protocol.message;
+
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Role;
+
+/**
+ * The server's answer to {@link HelloMessage}: the connection is open and this is the world.
+ *
+ * @param seq the hello's sequence number
+ * @param protocolVersion the protocol version the server speaks
+ * @param serverVersion the server's software version
+ * @param role the role the client was admitted as
+ * @param bounds the rectangle agents may walk on
+ * @param tickRate simulation ticks per simulated second
+ * @param clock realtime or lockstep
+ * @param tick the current tick
+ */
+public record WelcomeMessage(long seq,
+                             int protocolVersion,
+                             String serverVersion,
+                             Role role,
+                             Bounds bounds,
+                             int tickRate,
+                             ClockMode clock,
+                             long tick) implements ServerMessage, Reply {
+
+    public WelcomeMessage {
+        Checks.nonNegative(seq, "seq");
+        if (protocolVersion <= 0) {
+            throw new IllegalArgumentException("protocolVersion must be greater than 0, was " + protocolVersion);
+        }
+        Checks.text(serverVersion, "serverVersion");
+        Checks.present(role, "role");
+        Checks.present(bounds, "bounds");
+        if (tickRate <= 0) {
+            throw new IllegalArgumentException("tickRate must be greater than 0, was " + tickRate);
+        }
+        Checks.present(clock, "clock");
+        Checks.nonNegative(tick, "tick");
+    }
+}

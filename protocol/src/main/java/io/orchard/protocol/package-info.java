@@ -1,0 +1,8 @@
+/**
+ * The Orchard protocol: its {@linkplain io.orchard.protocol.MessageCodec codec} (newline-delimited
+ * JSON), its {@linkplain io.orchard.protocol.ProtocolVersion version} and the
+ * {@linkplain io.orchard.protocol.ProtocolException error} a bad line raises. The messages live in
+ * {@code io.orchard.protocol.message}, the values they carry in {@code io.orchard.protocol.value},
+ * and a small blocking connection on the JDK alone in {@code io.orchard.protocol.client}.
+ */
+package io.orchard.protocol;

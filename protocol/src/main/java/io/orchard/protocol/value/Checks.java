@@ -1,0 +1,106 @@
+package io.orchard.protocol.value;
+
+import java.util.List;
+import java.util.regex.Pattern;
+
+/**
+ * The validation every protocol record runs in its constructor, so that a value that exists is a
+ * valid one, whether it was built in Java or decoded from a line. Each check names the field and
+ * the bad value, because that text travels back to the client in an {@code ErrorMessage}.
+ *
+ * <p>Public only because the records of {@code io.orchard.protocol.message} use it too.
+ */
+public final class Checks {
+
+    /** Agent, joint and time-sensor names: a letter, then letters, digits, '_' or '-'; at most 32. */
+    public static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_-]{0,31}");
+
+    /** The longest free text (an instruction, something an agent says, a reason) in characters. */
+    public static final int MAX_TEXT = 1000;
+
+    private Checks() {}
+
+    public static <T> T present(T value, String field) {
+        if (value == null) {
+            throw new IllegalArgumentException("missing field '" + field + "'");
+        }
+        return value;
+    }
+
+    public static double finite(double value, String field) {
+        if (!Double.isFinite(value)) {
+            throw new IllegalArgumentException(field + " must be a finite number, was " + value);
+        }
+        return value;
+    }
+
+    public static double positive(double value, String field) {
+        finite(value, field);
+        if (value <= 0) {
+            throw new IllegalArgumentException(field + " must be greater than 0, was " + value);
+        }
+        return value;
+    }
+
+    public static double nonNegative(double value, String field) {
+        finite(value, field);
+        if (value < 0) {
+            throw new IllegalArgumentException(field + " must not be negative, was " + value);
+        }
+        return value;
+    }
+
+    public static long nonNegative(long value, String field) {
+        if (value < 0) {
+            throw new IllegalArgumentException(field + " must not be negative, was " + value);
+        }
+        return value;
+    }
+
+    public static String name(String value, String field) {
+        present(value, field);
+        if (!NAME.matcher(value).matches()) {
+            throw new IllegalArgumentException(field + " must be a letter followed by up to 31 letters, digits,"
+                    + " '_' or '-', was " + quote(value));
+        }
+        return value;
+    }
+
+    /** An object id such as a fruit's or a tree's: non-blank, printable, at most 64 characters. */
+    public static String id(String value, String field) {
+        present(value, field);
+        if (value.isBlank() || value.length() > 64 || value.chars().anyMatch(Character::isISOControl)) {
+            throw new IllegalArgumentException(field + " must be 1 to 64 printable characters, was " + quote(value));
+        }
+        return value;
+    }
+
+    public static String text(String value, String field) {
+        present(value, field);
+        if (value.length() > MAX_TEXT) {
+            throw new IllegalArgumentException(field + " must be at most " + MAX_TEXT + " characters, was "
+                    + value.length());
+        }
+        return value;
+    }
+
+    /** An optional text: null stays null, anything else is checked as {@link #text}. */
+    public static String optionalText(String value, String field) {
+        return value == null ? null : text(value, field);
+    }
+
+    public static <T> List<T> list(List<T> value, String field) {
+        present(value, field);
+        for (int i = 0; i < value.size(); i++) {
+            if (value.get(i) == null) {
+                throw new IllegalArgumentException(field + "[" + i + "] must not be null");
+            }
+        }
+        return List.copyOf(value);
+    }
+
+    static String quote(String value) {
+        String shown = value.length() > 40 ? value.substring(0, 40) + "..." : value;
+        return "'" + shown + "'";
+    }
+}

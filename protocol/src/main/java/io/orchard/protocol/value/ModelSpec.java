@@ -1,0 +1,58 @@
+package io.orchard.protocol.value;
+
+import java.util.Base64;
+
+/**
+ * An agent's visual model, sent at registration so that viewers show the agent as its author
+ * designed it: either the model's bytes ({@code data}, Base64) in one of the model formats, or the
+ * name of a model the viewer ships ({@code format} {@link ModelFormat#BUNDLED} and {@code bundled}).
+ *
+ * @param format  the model's format
+ * @param bundled the name of a bundled model, only with {@link ModelFormat#BUNDLED}
+ * @param data    the model file, Base64-encoded (standard alphabet, with padding); at most
+ *                {@link #MAX_MODEL_BYTES} once decoded
+ */
+public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable String data) {
+
+    /** The largest model, in bytes before Base64 encoding: 4 MiB. */
+    public static final int MAX_MODEL_BYTES = 4 * 1024 * 1024;
+
+    public ModelSpec {
+        Checks.present(format, "format");
+        if (format == ModelFormat.BUNDLED) {
+            Checks.name(bundled, "bundled");
+            if (data != null) {
+                throw new IllegalArgumentException("data must be absent for a bundled model");
+            }
+        } else {
+            Checks.present(data, "data");
+            if (bundled != null) {
+                throw new IllegalArgumentException("bundled is only for format 'bundled', was " + Checks.quote(bundled));
+            }
+            if (data.length() > (MAX_MODEL_BYTES + 2) / 3 * 4) {
+                throw new IllegalArgumentException("data must decode to at most " + MAX_MODEL_BYTES
+                        + " bytes, its Base64 text has " + data.length() + " characters");
+            }
+            try {
+                Base64.getDecoder().decode(data);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("data must be Base64: " + e.getMessage());
+            }
+        }
+    }
+
+    /** A model given by its bytes. */
+    public static ModelSpec of(ModelFormat format, byte[] bytes) {
+        return new ModelSpec(format, null, Base64.getEncoder().encodeToString(bytes));
+    }
+
+    /** One of the viewer's bundled models, by name. */
+    public static ModelSpec bundled(String name) {
+        return new ModelSpec(ModelFormat.BUNDLED, name, null);
+    }
+
+    /** The model's bytes; empty for a bundled model. */
+    public byte[] bytes() {
+        return data == null ? new byte[0] : Base64.getDecoder().decode(data);
+    }
+}

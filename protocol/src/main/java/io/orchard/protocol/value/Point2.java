@@ -1,0 +1,25 @@
+package io.orchard.protocol.value;
+
+/**
+ * A point on the ground plane (X/Z), used for the outlines of the castle and the river and for
+ * the entry points of bridges.
+ *
+ * @param x east (+) and west (-)
+ * @param z south (+) and north (-)
+ */
+public record Point2(double x, double z) {
+
+    public Point2 {
+        Checks.finite(x, "x");
+        Checks.finite(z, "z");
+    }
+
+    /** This point at height {@code y}. */
+    public Vec3 at(double y) {
+        return new Vec3(x, y, z);
+    }
+
+    public double distance(Point2 other) {
+        return Math.hypot(other.x - x, other.z - z);
+    }
+}

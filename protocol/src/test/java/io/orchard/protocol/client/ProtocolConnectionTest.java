@@ -1,0 +1,188 @@
+package io.orchard.protocol.client;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.ErrorCode;
+import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.MoveMessage;
+import io.orchard.protocol.message.Reply;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.message.TickMessage;
+import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Outcome;
+import io.orchard.protocol.value.Role;
+import io.orchard.protocol.value.Vec3;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BiConsumer;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/** The connection against a scripted peer on a real loopback socket. */
+class ProtocolConnectionTest {
+
+    private final MessageCodec codec = new MessageCodec();
+    private ServerSocket server;
+    private final List<String> received = new CopyOnWriteArrayList<>();
+
+    @AfterEach
+    void closeServer() throws IOException {
+        if (server != null) {
+            server.close();
+        }
+    }
+
+    /** Starts a peer on an ephemeral port that answers each client line with whatever {@code script} writes. */
+    private int peer(BiConsumer<ClientMessage, OutputStream> script) throws IOException {
+        server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+        Thread thread = new Thread(() -> {
+            try (Socket socket = server.accept()) {
+                BufferedReader in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8));
+                OutputStream out = socket.getOutputStream();
+                String line;
+                while ((line = in.readLine()) != null) {
+                    received.add(line);
+                    script.accept(codec.decodeClient(line), out);
+                }
+            } catch (IOException ignored) {
+                // the test closed the connection
+            }
+        });
+        thread.setDaemon(true);
+        thread.start();
+        return server.getLocalPort();
+    }
+
+    private void write(OutputStream out, ServerMessage message) {
+        try {
+            out.write(codec.encodeLine(message));
+            out.flush();
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private WelcomeMessage welcome(long seq) {
+        return new WelcomeMessage(seq, 1, "test", Role.AGENT, new Bounds(-10, -10, 10, 10), 20, ClockMode.LOCKSTEP, 0);
+    }
+
+    @Test
+    void connectPerformsTheHandshakeAndRequestGetsTheMatchingReply() throws Exception {
+        int port = peer((message, out) -> {
+            if (message instanceof HelloMessage hello) {
+                write(out, welcome(hello.seq()));
+            } else if (message instanceof MoveMessage move) {
+                write(out, new TickMessage(1, 0.05)); // unrelated traffic first
+                write(out, new ActionResultMessage(move.seq(), move.agent(), "Move", Outcome.ACCEPTED, null, move.to(), 0.5));
+            }
+        });
+        BlockingQueue<ServerMessage> heard = new LinkedBlockingQueue<>();
+        try (ProtocolConnection connection = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", heard::add)) {
+            assertThat(connection.welcome().tickRate()).isEqualTo(20);
+            CompletableFuture<Reply> reply = connection.request(seq -> new MoveMessage(seq, "Guppy", Vec3.ZERO, new Vec3(1, 0, 1)));
+            ActionResultMessage result = (ActionResultMessage) reply.get(5, TimeUnit.SECONDS);
+            assertThat(result.outcome()).isEqualTo(Outcome.ACCEPTED);
+            assertThat(result.seq()).isEqualTo(codec.decodeClient(received.get(1)).seq());
+            assertThat(heard.poll(5, TimeUnit.SECONDS)).isInstanceOf(TickMessage.class);
+        }
+        assertThat(received.get(0)).startsWith("{\"type\":\"Hello\"");
+    }
+
+    @Test
+    void refusedHandshakeFailsConnectWithTheServersReason() throws IOException {
+        int port = peer((message, out) -> write(out, new ErrorMessage(message.seq(), ErrorCode.VERSION_MISMATCH,
+                "server speaks protocol 2, client 1")));
+        assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", m -> { }))
+                .isInstanceOf(IOException.class)
+                .hasMessageContaining("version_mismatch: server speaks protocol 2, client 1");
+    }
+
+    @Test
+    void pendingRequestsFailWhenTheServerHangsUp() throws Exception {
+        int port = peer((message, out) -> {
+            if (message instanceof HelloMessage hello) {
+                write(out, welcome(hello.seq()));
+            } else {
+                try {
+                    server.close();
+                    out.close();
+                } catch (IOException ignored) {
+                    // closing is the point
+                }
+            }
+        });
+        CompletableFuture<Throwable> closed = new CompletableFuture<>();
+        ProtocolConnection connection = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test",
+                new ProtocolConnection.Listener() {
+                    @Override
+                    public void onMessage(ServerMessage message) { }
+
+                    @Override
+                    public void onClosed(Throwable cause) {
+                        closed.complete(cause);
+                    }
+                });
+        CompletableFuture<Reply> reply = connection.request(seq -> new MoveMessage(seq, "Guppy", Vec3.ZERO, Vec3.ZERO));
+        assertThatThrownBy(() -> reply.get(5, TimeUnit.SECONDS)).hasCauseInstanceOf(IOException.class);
+        closed.get(5, TimeUnit.SECONDS);
+        assertThat(connection.isOpen()).isFalse();
+        assertThatThrownBy(() -> connection.send(seq -> new MoveMessage(seq, "Guppy", Vec3.ZERO, Vec3.ZERO)))
+                .isInstanceOf(IOException.class);
+    }
+
+    @Test
+    void lineReaderRefusesLinesBeyondItsBound() {
+        byte[] data = ("short\n" + "x".repeat(100) + "\n").getBytes(StandardCharsets.UTF_8);
+        LineReader reader = new LineReader(new java.io.ByteArrayInputStream(data), 50);
+        assertThatThrownBy(() -> {
+            assertThat(new String(reader.readLine(), StandardCharsets.UTF_8)).isEqualTo("short");
+            reader.readLine();
+        }).isInstanceOf(IOException.class).hasMessageContaining("longer than 50 bytes");
+    }
+
+    @Test
+    void lineReaderSplitsLinesAcrossReads() throws IOException {
+        java.io.InputStream trickle = new java.io.InputStream() {
+            private final byte[] bytes = "ab\ncd\nlast".getBytes(StandardCharsets.UTF_8);
+            private int i;
+
+            @Override
+            public int read() {
+                return i < bytes.length ? bytes[i++] : -1;
+            }
+
+            @Override
+            public int read(byte[] b, int off, int len) {
+                if (i >= bytes.length) {
+                    return -1;
+                }
+                b[off] = bytes[i++];
+                return 1;
+            }
+        };
+        LineReader reader = new LineReader(trickle, 100);
+        assertThat(new String(reader.readLine(), StandardCharsets.UTF_8)).isEqualTo("ab");
+        assertThat(new String(reader.readLine(), StandardCharsets.UTF_8)).isEqualTo("cd");
+        assertThat(new String(reader.readLine(), StandardCharsets.UTF_8)).isEqualTo("last");
+        assertThat(reader.readLine()).isNull();
+    }
+}
