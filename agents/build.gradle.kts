@@ -1,0 +1,36 @@
+import org.gradle.api.tasks.testing.logging.TestExceptionFormat
+
+plugins {
+    `java-library`
+}
+
+group = "io.orchard"
+version = "0.1.0-SNAPSHOT"
+description = "AgentController, the base every Orchard agent extends, its behaviours and the paper's five agents."
+
+dependencies {
+    api(project(":protocol"))
+    implementation(libs.slf4j.api)
+
+    // Agents are tested against a real server, which they never depend on otherwise.
+    testImplementation(project(":server"))
+    testImplementation(libs.logback.classic)
+    testImplementation(platform(libs.junit.bom))
+    testImplementation(libs.junit.jupiter)
+    testImplementation(libs.assertj.core)
+    testRuntimeOnly(libs.junit.platform.launcher)
+}
+
+tasks.withType<JavaCompile>().configureEach {
+    options.release = 17
+    options.encoding = "UTF-8"
+    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
+}
+
+tasks.test {
+    useJUnitPlatform()
+    testLogging {
+        events("failed")
+        exceptionFormat = TestExceptionFormat.FULL
+    }
+}

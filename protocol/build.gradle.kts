@@ -1,0 +1,33 @@
+import org.gradle.api.tasks.testing.logging.TestExceptionFormat
+
+plugins {
+    `java-library`
+}
+
+group = "io.orchard"
+version = "0.1.0-SNAPSHOT"
+description = "The typed messages of the Orchard protocol, their codec and a small blocking client connection. Depends on Jackson alone."
+
+dependencies {
+    // The messages are Jackson-serialisable records and the codec hands out Jackson types.
+    api(libs.jackson.databind)
+
+    testImplementation(platform(libs.junit.bom))
+    testImplementation(libs.junit.jupiter)
+    testImplementation(libs.assertj.core)
+    testRuntimeOnly(libs.junit.platform.launcher)
+}
+
+tasks.withType<JavaCompile>().configureEach {
+    options.release = 17
+    options.encoding = "UTF-8"
+    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
+}
+
+tasks.test {
+    useJUnitPlatform()
+    testLogging {
+        events("failed")
+        exceptionFormat = TestExceptionFormat.FULL
+    }
+}

@@ -1,0 +1,47 @@
+import org.gradle.api.tasks.testing.logging.TestExceptionFormat
+
+plugins {
+    `java-library`
+    application
+}
+
+group = "io.orchard"
+version = "0.1.0-SNAPSHOT"
+description = "The world server: the 2.5D world model on JTS, the simulation and the Netty network layer."
+
+dependencies {
+    api(project(":protocol"))
+    implementation(libs.netty.handler)
+    implementation(libs.netty.codec.base)
+    implementation(libs.jts.core)
+    implementation(libs.slf4j.api)
+
+    testImplementation(libs.logback.classic)
+    testImplementation(platform(libs.junit.bom))
+    testImplementation(libs.junit.jupiter)
+    testImplementation(libs.assertj.core)
+    testRuntimeOnly(libs.junit.platform.launcher)
+}
+
+application {
+    mainClass = "io.orchard.server.ServerMain"
+}
+
+tasks.named<JavaExec>("run") {
+    // The server reads commands from its console.
+    standardInput = System.`in`
+}
+
+tasks.withType<JavaCompile>().configureEach {
+    options.release = 17
+    options.encoding = "UTF-8"
+    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
+}
+
+tasks.test {
+    useJUnitPlatform()
+    testLogging {
+        events("failed")
+        exceptionFormat = TestExceptionFormat.FULL
+    }
+}

@@ -1,0 +1,46 @@
+import org.gradle.api.tasks.testing.logging.TestExceptionFormat
+
+plugins {
+    `java-library`
+    application
+}
+
+group = "io.orchard"
+version = "0.1.0-SNAPSHOT"
+description = "The jMonkeyEngine viewer: renders the world and drives agent models from protocol messages."
+
+dependencies {
+    api(project(":protocol"))
+    // The viewer is a jME application made of app states, so jME's core types are part of its API.
+    api(libs.jme3.core)
+    implementation(libs.jme3.desktop)
+    implementation(libs.jme3.lwjgl3)
+    implementation(libs.jme3.plugins)
+    implementation(libs.slf4j.api)
+
+    // The viewer is tested against a real server, which it never depends on otherwise.
+    testImplementation(project(":server"))
+    testImplementation(libs.logback.classic)
+    testImplementation(platform(libs.junit.bom))
+    testImplementation(libs.junit.jupiter)
+    testImplementation(libs.assertj.core)
+    testRuntimeOnly(libs.junit.platform.launcher)
+}
+
+application {
+    mainClass = "io.orchard.viewer.ViewerMain"
+}
+
+tasks.withType<JavaCompile>().configureEach {
+    options.release = 17
+    options.encoding = "UTF-8"
+    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
+}
+
+tasks.test {
+    useJUnitPlatform()
+    testLogging {
+        events("failed")
+        exceptionFormat = TestExceptionFormat.FULL
+    }
+}
