@@ -11,6 +11,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.JsonParser;
+import tools.jackson.core.JsonToken;
 import tools.jackson.core.StreamReadFeature;
 import tools.jackson.core.StreamWriteFeature;
 import tools.jackson.core.exc.InputCoercionException;
@@ -129,6 +130,13 @@ public final class MessageCodec {
             throw new ProtocolException(ErrorCode.MALFORMED_JSON, "a line must hold one JSON object, it starts with '"
                     + (char) (utf8[first] & 0x7f) + "'");
         }
+        if (length > MAX_LINE_BYTES) {
+            Class<? extends Message> type = MessageTypes.all().get(peekType(utf8, length));
+            if (type == null || length > MessageTypes.maxLineBytes(type)) {
+                throw new ProtocolException(ErrorCode.LINE_TOO_LONG, (type == null ? "line" : MessageTypes.nameOf(type)
+                        + " line") + " of " + length + " bytes is longer than the limit of " + MAX_LINE_BYTES);
+            }
+        }
         Message message;
         try {
             message = reader.readValue(utf8, 0, length);
@@ -136,11 +144,6 @@ public final class MessageCodec {
             throw translate(e);
         } catch (RuntimeException e) {
             throw new ProtocolException(ErrorCode.INVALID_VALUE, "cannot decode line: " + e);
-        }
-        int limit = MessageTypes.maxLineBytes(message.getClass());
-        if (length > limit) {
-            throw new ProtocolException(ErrorCode.LINE_TOO_LONG, MessageTypes.nameOf(message.getClass())
-                    + " line of " + length + " bytes is longer than the limit of " + limit);
         }
         return message;
     }
@@ -181,6 +184,26 @@ public final class MessageCodec {
         }
         throw new ProtocolException(ErrorCode.WRONG_DIRECTION,
                 "type '" + MessageTypes.nameOf(message.getClass()) + "' is sent by clients, not by the server");
+    }
+
+    /** The top-level "type" of a long line, read without building the message; null if there is none. */
+    private String peekType(byte[] utf8, int length) {
+        try (JsonParser parser = reader.createParser(utf8, 0, length)) {
+            if (parser.nextToken() != JsonToken.START_OBJECT) {
+                return null;
+            }
+            while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
+                String name = parser.currentName();
+                JsonToken value = parser.nextToken();
+                if (name.equals("type") && value == JsonToken.VALUE_STRING) {
+                    return parser.getString();
+                }
+                parser.skipChildren();
+            }
+            return null;
+        } catch (JacksonException e) {
+            return null;
+        }
     }
 
     private static ProtocolException translate(JacksonException e) {

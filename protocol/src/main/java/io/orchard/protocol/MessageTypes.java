@@ -2,6 +2,7 @@ package io.orchard.protocol;
 
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.Message;
+import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import java.util.ArrayDeque;
@@ -19,9 +20,12 @@ public final class MessageTypes {
 
     private static final Map<String, Class<? extends Message>> BY_NAME = discover();
 
-    /** Messages that may carry an agent's model, and so may be longer than an ordinary line. */
-    private static final Set<Class<? extends Message>> LARGE =
-            Set.of(RegisterMessage.class, AgentAddedMessage.class, WorldSnapshotMessage.class);
+    /**
+     * Messages that may be longer than an ordinary line: those that carry an agent's model, the
+     * snapshot of a whole world, and a perception in a crowded part of a large world.
+     */
+    private static final Set<Class<? extends Message>> LARGE = Set.of(RegisterMessage.class, AgentAddedMessage.class,
+            WorldSnapshotMessage.class, PerceptionMessage.class);
 
     private MessageTypes() {}
 

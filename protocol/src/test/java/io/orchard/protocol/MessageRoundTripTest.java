@@ -84,6 +84,47 @@ class MessageRoundTripTest {
         }
     }
 
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("types")
+    void theWireCarriesExactlyTheRecordComponents(String type) throws Exception {
+        Message sample = Samples.of(type);
+        tools.jackson.databind.JsonNode line = tools.jackson.databind.json.JsonMapper.builder().build()
+                .readTree(codec.encode(sample));
+        assertThat(line.get("type").asString()).isEqualTo(type);
+        assertComponents(sample, line, type);
+    }
+
+    /** Every field on the wire is a component of its record, so no accessor leaks onto the wire. */
+    private static void assertComponents(Object value, tools.jackson.databind.JsonNode node, String path)
+            throws Exception {
+        if (value instanceof Record record) {
+            java.util.Set<String> names = new java.util.HashSet<>();
+            for (var component : record.getClass().getRecordComponents()) {
+                names.add(component.getName());
+                Object child = component.getAccessor().invoke(record);
+                if (child != null) {
+                    assertComponents(child, node.get(component.getName()), path + "." + component.getName());
+                }
+            }
+            java.util.List<String> onWire = new java.util.ArrayList<>();
+            node.propertyNames().forEach(onWire::add);
+            onWire.remove("type");
+            assertThat(names).as("fields of %s", path).containsAll(onWire);
+        } else if (value instanceof java.util.List<?> list) {
+            for (int i = 0; i < list.size(); i++) {
+                assertComponents(list.get(i), node.get(i), path + "[" + i + "]");
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("types")
+    void theSpecificationShowsTheGoldenLine(String type) throws IOException {
+        String specification = Files.readString(Paths.get("../docs/protocol.md"), StandardCharsets.UTF_8);
+        String golden = Files.readString(GOLDEN.resolve(type + ".json"), StandardCharsets.UTF_8).strip();
+        assertThat(specification).as("docs/protocol.md shows the example line of %s", type).contains(golden);
+    }
+
     @Test
     void goldenFilesHaveNoStrays() throws IOException {
         try (var files = Files.list(GOLDEN)) {

@@ -193,9 +193,16 @@ public final class ProtocolConnection implements AutoCloseable {
             LineReader lines = new LineReader(socket.getInputStream(), MessageCodec.MAX_LARGE_LINE_BYTES);
             byte[] line;
             while ((line = lines.readLine()) != null) {
-                dispatch(codec.decodeServer(line));
+                ServerMessage message;
+                try {
+                    message = codec.decodeServer(line);
+                } catch (ProtocolException e) {
+                    // A newer server may send types or values this client does not know: skip them.
+                    continue;
+                }
+                dispatch(message);
             }
-        } catch (IOException | ProtocolException e) {
+        } catch (IOException e) {
             failure = closed.get() ? null : e;
         } catch (RuntimeException e) {
             failure = e;

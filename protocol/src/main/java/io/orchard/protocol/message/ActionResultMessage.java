@@ -7,10 +7,10 @@ import io.orchard.protocol.value.Vec3;
 
 /**
  * The result of an action (move, rotation, joint, animation, registration of a joint or time
- * sensor, perception request, unregistration): accepted, blocked or rejected with the reason.
+ * sensor, perception request, unregistration, game command): accepted, blocked or rejected with the reason.
  *
  * @param seq the action's sequence number
- * @param agent the agent that acted
+ * @param agent the agent that acted; absent for a game command
  * @param action the action's message type, for example {@code Move}
  * @param outcome accepted, blocked or rejected
  * @param reason why it was blocked or rejected ("path crosses tree T17")
@@ -18,7 +18,7 @@ import io.orchard.protocol.value.Vec3;
  * @param duration for moves: how long the move takes in simulated seconds; otherwise 0
  */
 public record ActionResultMessage(long seq,
-                                  String agent,
+                                  @Nullable String agent,
                                   String action,
                                   Outcome outcome,
                                   @Nullable String reason,
@@ -27,7 +27,9 @@ public record ActionResultMessage(long seq,
 
     public ActionResultMessage {
         Checks.nonNegative(seq, "seq");
-        Checks.name(agent, "agent");
+        if (agent != null) {
+            Checks.name(agent, "agent");
+        }
         Checks.text(action, "action");
         Checks.present(outcome, "outcome");
         Checks.optionalText(reason, "reason");

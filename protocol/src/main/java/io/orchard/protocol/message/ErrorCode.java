@@ -34,8 +34,6 @@ public enum ErrorCode {
     NAME_IN_USE("name_in_use"),
     /** The connection has registered as many agents as it may. */
     TOO_MANY_AGENTS("too_many_agents"),
-    /** The joint or time sensor was not registered. */
-    NOT_REGISTERED("not_registered"),
     /** The game is over or not running. */
     GAME_NOT_RUNNING("game_not_running"),
     /** The client sent more messages than the rate allows; the connection closes. */
@@ -44,7 +42,7 @@ public enum ErrorCode {
     SLOW_CONSUMER("slow_consumer"),
     /** The client sent nothing for too long; the connection closes. */
     IDLE("idle"),
-    /** The server failed; the message had no effect. */
+    /** The server failed; the message had no effect; the connection closes. */
     INTERNAL_ERROR("internal_error");
 
     private final String wireName;

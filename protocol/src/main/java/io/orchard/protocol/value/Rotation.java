@@ -1,5 +1,7 @@
 package io.orchard.protocol.value;
 
+import com.fasterxml.jackson.annotation.JsonIgnore;
+
 /**
  * A rotation as in VRML's SFRotation: a right-handed turn of {@code angle} radians about
  * {@code axis}. An agent's heading is a rotation about the up axis {@code (0, 1, 0)}: angle 0
@@ -27,6 +29,7 @@ public record Rotation(Vec3 axis, double angle) {
     }
 
     /** Whether this rotation is about the vertical axis (up or down), as an agent's heading must be. */
+    @JsonIgnore
     public boolean isAboutUpAxis() {
         return axis.x() == 0 && axis.z() == 0;
     }

@@ -108,6 +108,26 @@ class ProtocolConnectionTest {
     }
 
     @Test
+    void linesOfUnknownTypesAreSkippedAndTheConnectionGoesOn() throws Exception {
+        int port = peer((message, out) -> {
+            if (message instanceof HelloMessage hello) {
+                write(out, welcome(hello.seq()));
+                try {
+                    out.write("{\"type\":\"SomethingNewer\",\"tick\":1}\n".getBytes(StandardCharsets.UTF_8));
+                } catch (IOException e) {
+                    throw new java.io.UncheckedIOException(e);
+                }
+                write(out, new TickMessage(2, 0.1));
+            }
+        });
+        BlockingQueue<ServerMessage> heard = new LinkedBlockingQueue<>();
+        try (ProtocolConnection connection = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", heard::add)) {
+            assertThat(heard.poll(5, TimeUnit.SECONDS)).isEqualTo(new TickMessage(2, 0.1));
+            assertThat(connection.isOpen()).isTrue();
+        }
+    }
+
+    @Test
     void refusedHandshakeFailsConnectWithTheServersReason() throws IOException {
         int port = peer((message, out) -> write(out, new ErrorMessage(message.seq(), ErrorCode.VERSION_MISMATCH,
                 "server speaks protocol 2, client 1")));
