@@ -17,10 +17,19 @@ dependencies {
     implementation(libs.slf4j.api)
 
     testImplementation(libs.logback.classic)
+    testImplementation(libs.jmh.core)
+    testAnnotationProcessor(libs.jmh.generator.annprocess)
     testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)
+}
+
+// The JMH benchmarks compile with the tests so that they cannot rot (see docs/benchmarks.md).
+sourceSets {
+    test {
+        java.srcDir("src/jmh/java")
+    }
 }
 
 application {
@@ -43,5 +52,12 @@ tasks.test {
     testLogging {
         events("failed")
         exceptionFormat = TestExceptionFormat.FULL
+    }
+}
+
+// Stamp the build's version into the version resource, as Maven's resource filtering does.
+tasks.processResources {
+    filesMatching("**/*version.properties") {
+        expand("project" to mapOf("version" to project.version))
     }
 }

@@ -9,9 +9,10 @@ import tools.jackson.databind.introspect.JacksonAnnotationIntrospector;
 /**
  * Makes every record component required on the wire unless it is marked {@link Nullable}. Without
  * this, a missing number would silently decode as 0 and a missing coordinate would move an agent
- * to the origin.
+ * to the origin. Public so that other JSON formats built on the protocol's records (scenario files)
+ * read them by the same rule.
  */
-final class RequiredUnlessNullable extends JacksonAnnotationIntrospector {
+public final class RequiredUnlessNullable extends JacksonAnnotationIntrospector {
 
     private static final long serialVersionUID = 1L;
 

@@ -59,17 +59,36 @@ public final class Checks {
 
     public static String name(String value, String field) {
         present(value, field);
-        if (!NAME.matcher(value).matches()) {
+        if (!isName(value)) {
             throw new IllegalArgumentException(field + " must be a letter followed by up to 31 letters, digits,"
                     + " '_' or '-', was " + quote(value));
         }
         return value;
     }
 
+    /** Whether {@code value} matches {@link #NAME}; checked by hand because it runs for every perceived agent. */
+    static boolean isName(String value) {
+        int length = value.length();
+        if (length == 0 || length > 32 || !isAsciiLetter(value.charAt(0))) {
+            return false;
+        }
+        for (int i = 1; i < length; i++) {
+            char c = value.charAt(i);
+            if (!isAsciiLetter(c) && !(c >= '0' && c <= '9') && c != '_' && c != '-') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean isAsciiLetter(char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+    }
+
     /** An object id such as a fruit's or a tree's: non-blank, printable, at most 64 characters. */
     public static String id(String value, String field) {
         present(value, field);
-        if (value.isBlank() || value.length() > 64 || value.chars().anyMatch(Character::isISOControl)) {
+        if (value.isBlank() || value.length() > 64 || hasControl(value)) {
             throw new IllegalArgumentException(field + " must be 1 to 64 printable characters, was " + quote(value));
         }
         return value;
@@ -97,6 +116,15 @@ public final class Checks {
             }
         }
         return List.copyOf(value);
+    }
+
+    private static boolean hasControl(String value) {
+        for (int i = 0; i < value.length(); i++) {
+            if (Character.isISOControl(value.charAt(i))) {
+                return true;
+            }
+        }
+        return false;
     }
 
     static String quote(String value) {

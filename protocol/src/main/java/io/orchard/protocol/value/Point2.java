@@ -20,6 +20,8 @@ public record Point2(double x, double z) {
     }
 
     public double distance(Point2 other) {
-        return Math.hypot(other.x - x, other.z - z);
+        double dx = other.x - x;
+        double dz = other.z - z;
+        return Math.sqrt(dx * dx + dz * dz); // Math.hypot guards against overflow we cannot have, slowly
     }
 }

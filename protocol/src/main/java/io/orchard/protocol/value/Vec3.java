@@ -26,7 +26,9 @@ public record Vec3(double x, double y, double z) {
 
     /** Distance to {@code other} in the X/Z plane, ignoring height (the world is 2.5D). */
     public double groundDistance(Vec3 other) {
-        return Math.hypot(other.x - x, other.z - z);
+        double dx = other.x - x;
+        double dz = other.z - z;
+        return Math.sqrt(dx * dx + dz * dz); // Math.hypot guards against overflow we cannot have, slowly
     }
 
     public Vec3 plus(Vec3 other) {

@@ -1,0 +1,51 @@
+package io.orchard.server.bench;
+
+import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.value.Role;
+import io.orchard.server.sim.ClientSession;
+import io.orchard.server.sim.EncodedLine;
+
+/** A session that counts what it is sent and drops it, so a benchmark measures the simulation alone. */
+final class NullSession implements ClientSession {
+
+    private final long id;
+    private final Role role;
+    long messages;
+
+    NullSession(long id, Role role) {
+        this.id = id;
+        this.role = role;
+    }
+
+    @Override
+    public long id() {
+        return id;
+    }
+
+    @Override
+    public Role role() {
+        return role;
+    }
+
+    @Override
+    public void send(ServerMessage message) {
+        messages++;
+    }
+
+    @Override
+    public void send(EncodedLine line) {
+        messages++;
+    }
+
+    @Override
+    public void flush() {}
+
+    @Override
+    public void close(ErrorMessage last) {}
+
+    @Override
+    public boolean isOpen() {
+        return true;
+    }
+}

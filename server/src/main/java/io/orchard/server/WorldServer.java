@@ -1,0 +1,313 @@
+package io.orchard.server;
+
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Score;
+import io.orchard.server.net.NetLimits;
+import io.orchard.server.net.NetServer;
+import io.orchard.server.sim.FileRecorder;
+import io.orchard.server.sim.GameListener;
+import io.orchard.server.sim.Phase;
+import io.orchard.server.sim.Placement;
+import io.orchard.server.sim.Recorder;
+import io.orchard.server.sim.Simulation;
+import io.orchard.server.sim.SimulationConfig;
+import io.orchard.server.sim.TickLoop;
+import io.orchard.server.world.World;
+import io.orchard.server.world.WorldGenerator;
+import io.orchard.server.world.scenario.ScenarioFile;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * An Orchard world server that any JVM program can embed: it holds the world, runs the game and
+ * speaks the protocol to agents and viewers over TCP.
+ *
+ * <pre>{@code
+ * try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP)
+ *         .listener(new GameListener() {
+ *             public void gameOver(String reason, List<Score> ranking) { System.out.println(ranking); }
+ *         })
+ *         .start()) {
+ *     int port = server.port(); // connect agents here
+ *     server.awaitGameOver();
+ * }
+ * }</pre>
+ *
+ * <p>{@link #close()} stops the game and the network and leaves no thread behind.
+ */
+public final class WorldServer implements AutoCloseable {
+
+    /** The port the server listens on unless told otherwise. */
+    public static final int DEFAULT_PORT = 7557;
+
+    private final Simulation simulation;
+    private final NetServer net;
+    private final TickLoop loop;
+    private final Thread tickThread;
+    private final Recorder recorder;
+    private final CompletableFuture<List<Score>> gameOver;
+
+    private WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
+                        CompletableFuture<List<Score>> gameOver) {
+        this.simulation = simulation;
+        this.net = net;
+        this.loop = loop;
+        this.tickThread = tickThread;
+        this.recorder = recorder;
+        this.gameOver = gameOver;
+    }
+
+    /** A builder with the defaults: port 7557 on loopback, a random seed, realtime at 20 ticks/s. */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** The port the server listens on (the real one when built with port 0). */
+    public int port() {
+        return net.port();
+    }
+
+    /** The seed the world was made from. */
+    public long seed() {
+        return simulation.seed();
+    }
+
+    /** Starts the game now without waiting for more agents. Safe from any thread. */
+    public void startGame() {
+        simulation.execute(simulation::start);
+    }
+
+    /** Pauses a running game, or continues a paused one. Safe from any thread. */
+    public void togglePause() {
+        simulation.execute(simulation::togglePause);
+    }
+
+    /** Ends the game now. Safe from any thread. */
+    public void endGame(String reason) {
+        simulation.execute(() -> simulation.end(reason));
+    }
+
+    /** A one-line account of the game: phase, time, agents, fruit left and scores. Safe from any thread. */
+    public String status() {
+        CompletableFuture<String> status = new CompletableFuture<>();
+        simulation.execute(() -> status.complete(String.format(java.util.Locale.ROOT,
+                "%s  t=%.1fs  tick %d  agents %s  fruit left %d  scores %s",
+                simulation.phase().name().toLowerCase(java.util.Locale.ROOT), simulation.time(), simulation.tick(),
+                simulation.agentNames(), simulation.fruitLeft(), simulation.ranking())));
+        try {
+            return status.get(5, java.util.concurrent.TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return "interrupted";
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            return "status unavailable: " + e;
+        }
+    }
+
+    /** The phase of the game. */
+    public Phase phase() {
+        return simulation.phase();
+    }
+
+    /** Completes with the final ranking when the game is over. */
+    public CompletableFuture<List<Score>> gameOver() {
+        return gameOver;
+    }
+
+    /** Waits until the game is over and returns the ranking. */
+    public List<Score> awaitGameOver() throws InterruptedException {
+        try {
+            return gameOver.get();
+        } catch (java.util.concurrent.ExecutionException e) {
+            throw new IllegalStateException(e.getCause());
+        }
+    }
+
+    /** Stops the game and the network, closes the recording and waits for every thread to end. */
+    @Override
+    public void close() {
+        // The clock stops first, so that nothing the closing connections cause reaches the game.
+        loop.stop();
+        try {
+            tickThread.join(5_000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        net.close();
+        recorder.close();
+        gameOver.cancel(false);
+    }
+
+    /**
+     * Configures a {@link WorldServer}. Every setter checks its value at once and names it when it is
+     * wrong.
+     */
+    public static final class Builder {
+
+        private String bind = "127.0.0.1";
+        private int port = DEFAULT_PORT;
+        private Long seed;
+        private ClockMode clock = ClockMode.REALTIME;
+        private int tickRate = SimulationConfig.DEFAULT.tickRate();
+        private double timeLimit = SimulationConfig.DEFAULT.timeLimit();
+        private int waitFor;
+        private Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
+        private Path scenario;
+        private Path record;
+        private String token;
+        private NetLimits limits = NetLimits.DEFAULT;
+        private Placement placement = (name, radius) -> null;
+        private final List<GameListener> listeners = new ArrayList<>();
+
+        private Builder() {}
+
+        /** The address to listen on: loopback by default; "0.0.0.0" for every interface. */
+        public Builder bind(String address) {
+            this.bind = Objects.requireNonNull(address, "bind address");
+            return this;
+        }
+
+        /** The TCP port, 0 for any free one. */
+        public Builder port(int port) {
+            if (port < 0 || port > 65535) {
+                throw new IllegalArgumentException("port must be 0 to 65535, was " + port);
+            }
+            this.port = port;
+            return this;
+        }
+
+        /** The seed the world is made from; without one a seed is drawn (and {@link #seed()} tells it). */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** Realtime or lockstep. */
+        public Builder clock(ClockMode clock) {
+            this.clock = Objects.requireNonNull(clock, "clock");
+            return this;
+        }
+
+        /** Ticks per simulated second, 1 to 1000. */
+        public Builder tickRate(int tickRate) {
+            if (tickRate < 1 || tickRate > 1000) {
+                throw new IllegalArgumentException("tick rate must be 1 to 1000 ticks per second, was " + tickRate);
+            }
+            this.tickRate = tickRate;
+            return this;
+        }
+
+        /** The game's length in simulated seconds. */
+        public Builder timeLimit(double seconds) {
+            if (!(seconds > 0) || Double.isInfinite(seconds)) {
+                throw new IllegalArgumentException("time limit must be a positive number of seconds, was " + seconds);
+            }
+            this.timeLimit = seconds;
+            return this;
+        }
+
+        /** Start the game only when this many agents have registered (0: at the first). */
+        public Builder waitFor(int agents) {
+            if (agents < 0) {
+                throw new IllegalArgumentException("waitFor must not be negative, was " + agents);
+            }
+            this.waitFor = agents;
+            return this;
+        }
+
+        /** In lockstep, how long a tick waits for agents that have not ended their turn. */
+        public Builder lockstepDeadline(Duration deadline) {
+            if (deadline == null || deadline.isNegative() || deadline.isZero()) {
+                throw new IllegalArgumentException("lockstep deadline must be positive, was " + deadline);
+            }
+            this.lockstepDeadline = deadline;
+            return this;
+        }
+
+        /** Load the world from a scenario file instead of generating it. */
+        public Builder scenario(Path file) {
+            this.scenario = Objects.requireNonNull(file, "scenario file");
+            return this;
+        }
+
+        /** Record every message accepted and sent to this file (newline-delimited JSON). */
+        public Builder record(Path file) {
+            this.record = Objects.requireNonNull(file, "record file");
+            return this;
+        }
+
+        /** Require clients to present this shared secret in their hello. */
+        public Builder token(String token) {
+            if (token != null && token.isEmpty()) {
+                throw new IllegalArgumentException("token must not be empty");
+            }
+            this.token = token;
+            return this;
+        }
+
+        /** Per-connection limits (rates, timeouts, queues). */
+        public Builder limits(NetLimits limits) {
+            this.limits = Objects.requireNonNull(limits, "limits");
+            return this;
+        }
+
+        /** Choose where agents stand when they register (by default the seed draws free places). */
+        public Builder placement(Placement placement) {
+            this.placement = Objects.requireNonNull(placement, "placement");
+            return this;
+        }
+
+        /** Hear what happens in the game (on the simulation's thread). */
+        public Builder listener(GameListener listener) {
+            listeners.add(Objects.requireNonNull(listener, "listener"));
+            return this;
+        }
+
+        /**
+         * Builds the world, binds the port and starts the clock.
+         *
+         * @throws IOException when the scenario cannot be read, the recording cannot be written or the
+         *                     port cannot be bound
+         */
+        public WorldServer start() throws IOException {
+            long actualSeed = seed != null ? seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
+            World world = scenario != null ? World.fromScenario(ScenarioFile.read(scenario))
+                    : WorldGenerator.standard(actualSeed).generate();
+            SimulationConfig config = new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
+                    SimulationConfig.DEFAULT.agentsPerSession(), SimulationConfig.DEFAULT.bodyLimits());
+            Recorder recorder = record != null ? FileRecorder.open(record) : Recorder.NONE;
+            CompletableFuture<List<Score>> over = new CompletableFuture<>();
+            List<GameListener> all = new ArrayList<>(listeners);
+            all.add(new GameListener() {
+                @Override
+                public void gameOver(String reason, List<Score> ranking) {
+                    over.complete(ranking);
+                }
+            });
+            Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
+                    placement);
+            NetServer net;
+            try {
+                net = NetServer.start(new InetSocketAddress(bind, port), simulation, token, limits);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                recorder.close();
+                throw new IOException("interrupted while binding port " + port, e);
+            } catch (RuntimeException e) {
+                recorder.close();
+                throw new IOException("cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
+            }
+            TickLoop loop = new TickLoop(simulation);
+            Thread thread = new Thread(loop, "orchard-tick");
+            thread.start();
+            return new WorldServer(simulation, net, loop, thread, recorder, over);
+        }
+    }
+}

@@ -1,0 +1,44 @@
+package io.orchard.server.net;
+
+import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
+import io.netty.channel.ChannelFutureListener;
+import io.netty.channel.ChannelHandler.Sharable;
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.handler.codec.MessageToMessageDecoder;
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.ProtocolException;
+import io.orchard.protocol.message.ErrorCode;
+import io.orchard.protocol.message.ErrorMessage;
+import java.util.List;
+
+/**
+ * Turns one framed line into a {@code ClientMessage}. A line that does not decode is answered with
+ * an {@link ErrorMessage} naming the problem and dropped; the connection stays open, except for a
+ * line that is too long, after which it closes. Stateless, so one instance serves every channel.
+ */
+@Sharable
+final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
+
+    private final MessageCodec codec;
+
+    MessageDecoder(MessageCodec codec) {
+        super(ByteBuf.class);
+        this.codec = codec;
+    }
+
+    @Override
+    protected void decode(ChannelHandlerContext ctx, ByteBuf frame, List<Object> out) {
+        byte[] line = ByteBufUtil.getBytes(frame);
+        try {
+            out.add(codec.decodeClient(line));
+        } catch (ProtocolException e) {
+            ErrorMessage error = new ErrorMessage(SeqSniffer.seqOf(line), e.code(), e.getMessage());
+            if (e.code() == ErrorCode.LINE_TOO_LONG) {
+                ctx.writeAndFlush(error).addListener(ChannelFutureListener.CLOSE);
+            } else {
+                ctx.writeAndFlush(error);
+            }
+        }
+    }
+}

@@ -1,0 +1,53 @@
+package io.orchard.server.sim;
+
+import io.orchard.protocol.value.AgentState;
+import io.orchard.protocol.value.Body;
+import io.orchard.protocol.value.ModelSpec;
+import io.orchard.protocol.value.Vec3;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.Set;
+
+/**
+ * An agent in the world: its body, where it stands and walks, and what its controller registered.
+ * Mutable, and owned by the simulation's thread.
+ */
+final class Agent {
+
+    final String name;
+    final ClientSession owner;
+    final Body body;
+    final ModelSpec model;
+    final Set<String> joints = new LinkedHashSet<>();
+    final Set<String> timeSensors = new LinkedHashSet<>();
+    Vec3 position;
+    double heading;
+    Motion motion;
+    boolean perceptionRequested;
+    int perceptionEvery;
+    long nextPerceptionTick = -1;
+
+    Agent(String name, ClientSession owner, Body body, ModelSpec model, Vec3 position, double heading) {
+        this.name = name;
+        this.owner = owner;
+        this.body = body;
+        this.model = model;
+        this.position = position;
+        this.heading = heading;
+    }
+
+    AgentState state() {
+        return new AgentState(name, body, position, heading, model, new ArrayList<>(joints),
+                new ArrayList<>(timeSensors));
+    }
+
+    /** Whether this agent wants its perception in the tick {@code tick}. */
+    boolean perceivesIn(long tick) {
+        return perceptionRequested || (perceptionEvery > 0 && tick >= nextPerceptionTick);
+    }
+
+    @Override
+    public String toString() {
+        return name;
+    }
+}

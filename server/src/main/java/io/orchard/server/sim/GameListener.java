@@ -1,0 +1,30 @@
+package io.orchard.server.sim;
+
+import io.orchard.protocol.value.FruitKind;
+import io.orchard.protocol.value.Score;
+import java.util.List;
+
+/**
+ * Hears what happens in a game, for programs that embed the server. Called on the simulation's
+ * thread: return quickly and hand long work elsewhere. Every method does nothing by default.
+ */
+public interface GameListener {
+
+    /** The game started. */
+    default void gameStarted(long seed, int fruitCount, double timeLimit) {}
+
+    /** An agent entered the world. */
+    default void agentJoined(String agent) {}
+
+    /** An agent left the world (it unregistered or its connection closed). */
+    default void agentLeft(String agent, String reason) {}
+
+    /** An agent collected a fruit. */
+    default void fruitEaten(String agent, String fruit, FruitKind kind, double time) {}
+
+    /** The game ended; the ranking lists every agent that played, best first. */
+    default void gameOver(String reason, List<Score> ranking) {}
+
+    /** A tick ended (called once per tick, after the world changed). */
+    default void tickEnded(long tick, double time) {}
+}
