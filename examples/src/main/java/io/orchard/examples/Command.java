@@ -1,5 +1,7 @@
 package io.orchard.examples;
 
+import io.orchard.protocol.cli.UsageException;
+
 import java.io.PrintStream;
 import java.util.List;
 

@@ -2,15 +2,13 @@ package io.orchard.examples;
 
 import io.orchard.examples.schema.ProtocolSchemaCommand;
 import io.orchard.protocol.ProtocolVersion;
-import java.io.IOException;
-import java.io.InputStream;
+import io.orchard.protocol.cli.UsageException;
+import io.orchard.server.Version;
 import java.io.PrintStream;
-import java.io.UncheckedIOException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Properties;
 
 /**
  * The {@code orchard} launcher: {@code ./orchard <command> [options]} runs one of the
@@ -24,6 +22,7 @@ public final class Orchard {
 
     /** The launcher's commands, in the order its help lists them. A new command is added here. */
     static final List<Command> COMMANDS = List.of(
+            new ServerCommand(),
             new ProtocolSchemaCommand());
 
     /** How the launcher is started, as the help shows it. */
@@ -34,7 +33,6 @@ public final class Orchard {
     static final int USAGE = 2;
 
     private static final String HELP = "help";
-    private static final String VERSION_RESOURCE = "orchard-version.properties";
 
     private final Map<String, Command> commands = new LinkedHashMap<>();
 
@@ -95,20 +93,9 @@ public final class Orchard {
         return runCommand(command, rest, out, err);
     }
 
-    /** The version of Orchard, from the resource the build fills in; "unknown" without it. */
+    /** The version of Orchard, as the build stamped it. */
     static String version() {
-        try (InputStream in = Orchard.class.getResourceAsStream(VERSION_RESOURCE)) {
-            if (in == null) {
-                return "unknown";
-            }
-            Properties properties = new Properties();
-            properties.load(in);
-            String version = properties.getProperty("version", "unknown");
-            // A build that copies resources without filtering them leaves the placeholder in place.
-            return version.contains("${") ? "unknown" : version;
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot read " + VERSION_RESOURCE, e);
-        }
+        return Version.current();
     }
 
     private static int runCommand(Command command, List<String> args, PrintStream out, PrintStream err) {

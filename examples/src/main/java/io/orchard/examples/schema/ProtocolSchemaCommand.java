@@ -1,7 +1,7 @@
 package io.orchard.examples.schema;
 
 import io.orchard.examples.Command;
-import io.orchard.examples.UsageException;
+import io.orchard.protocol.cli.UsageException;
 import io.orchard.protocol.ProtocolVersion;
 import java.io.IOException;
 import java.io.PrintStream;
