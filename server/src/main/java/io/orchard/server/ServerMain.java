@@ -70,8 +70,8 @@ public final class ServerMain {
             return 2;
         }
         if (options.has("write-scenario")) {
-            long seed = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE) == null ? 1
-                    : options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
+            Long given = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
+            long seed = given != null ? given : java.util.concurrent.ThreadLocalRandom.current().nextLong(1, 1L << 48);
             Path file = Path.of(options.string("write-scenario"));
             ScenarioFile.write(WorldGenerator.standard(seed).generate().toScenario(), file);
             out.println("wrote the world of seed " + seed + " to " + file);

@@ -1,0 +1,70 @@
+package io.orchard.server;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.orchard.server.world.scenario.ScenarioFile;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.InputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class ServerMainTest {
+
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    private int run(String console, String... args) throws Exception {
+        InputStream in = new ByteArrayInputStream(console.getBytes(StandardCharsets.UTF_8));
+        return ServerMain.run(List.of(args), in, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    private String out() {
+        return out.toString(StandardCharsets.UTF_8);
+    }
+
+    @Test
+    void helpListsEveryOptionAndTheConsoleCommands() throws Exception {
+        assertThat(run("", "--help")).isZero();
+        assertThat(out()).contains("--port", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
+                "--record", "--token", "Console commands: start, pause, continue, status, stop");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', textBlock = """
+        unknown option   | --colour=blue      | unknown option --colour
+        port too large   | --port=70000       | --port must be 0 to 65535, was 70000
+        clock misspelled | --clock=lockstop   | --clock must be one of realtime, lockstep, was 'lockstop'
+        seed not number  | --seed=abc         | --seed must be a whole number, was 'abc'
+        """)
+    void aBadOptionIsNamedAndExitsWithTwo(String name, String arg, String message) throws Exception {
+        assertThat(run("", arg)).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains(message);
+    }
+
+    @Test
+    void writeScenarioWritesTheGeneratedWorldOfTheSeed() throws Exception {
+        Path file = dir.resolve("world.json");
+        assertThat(run("", "--seed", "5", "--write-scenario", file.toString())).isZero();
+        assertThat(ScenarioFile.read(file)).isEqualTo(io.orchard.server.world.WorldGenerator.standard(5).scenario());
+    }
+
+    @Test
+    void aConsoleStartRunsTheGameToItsTimeLimitAndPrintsTheRanking() throws Exception {
+        Path record = dir.resolve("game.ndjson");
+        assertThat(run("status\nstart\n", "--port", "0", "--seed", "3", "--time-limit", "0.5", "--tick-rate", "50",
+                "--record", record.toString())).isZero();
+        assertThat(out()).contains("listening on port", "seed 3", "Game over. Ranking:");
+        assertThat(java.nio.file.Files.readString(record)).contains("\"type\":\"GameStarted\"", "\"type\":\"GameOver\"");
+    }
+}
