@@ -1,0 +1,183 @@
+package io.orchard.viewer.model;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * One node of the format-neutral scene description both parsers produce: its type, DEF name and
+ * the fields the file set. Unset fields read as their defaults. A {@code USE} is the very same
+ * object in two places, so identity means "the same node".
+ *
+ * <p>Arrays returned by the getters are shared with the description and must not be modified.
+ */
+final class SceneNode {
+
+    private final String typeName;
+    private final NodeType type;
+    private final String location;
+    private final Map<String, Object> fields = new LinkedHashMap<>();
+    private String defName;
+    private int weight = 1;
+    private int height = 1;
+
+    SceneNode(String typeName, String location) {
+        this.typeName = typeName;
+        this.type = NodeSchema.find(typeName).orElse(null);
+        this.location = location;
+    }
+
+    String typeName() {
+        return typeName;
+    }
+
+    /** The schema type, or empty for a node type this loader parses but does not build. */
+    Optional<NodeType> type() {
+        return Optional.ofNullable(type);
+    }
+
+    boolean isKnown() {
+        return type != null;
+    }
+
+    boolean is(String name) {
+        return typeName.equals(name);
+    }
+
+    Optional<String> defName() {
+        return Optional.ofNullable(defName);
+    }
+
+    void setDefName(String name) {
+        this.defName = name;
+    }
+
+    /** Where the node starts in its file, such as {@code "line 4:3"}. */
+    String location() {
+        return location;
+    }
+
+    /**
+     * How many nodes this node stands for, itself and everything below it, counting each
+     * {@code USE} in full: what instantiating it costs.
+     */
+    int weight() {
+        return weight;
+    }
+
+    /** How many levels deep the tree below this node goes, itself included. */
+    int height() {
+        return height;
+    }
+
+    /**
+     * Computes {@link #weight()} and {@link #height()} from the node's children, counting every
+     * {@code USE} in full; called once, when the node's last child has been read.
+     */
+    void complete() {
+        int totalWeight = 1;
+        int maxHeight = 0;
+        for (SceneNode child : childNodes()) {
+            totalWeight += child.weight;
+            maxHeight = Math.max(maxHeight, child.height);
+        }
+        this.weight = totalWeight;
+        this.height = maxHeight + 1;
+    }
+
+    void set(String field, Object value) {
+        fields.put(field, value);
+    }
+
+    boolean has(String field) {
+        return fields.containsKey(field);
+    }
+
+    /** The nodes held in node-valued fields, in file order (unknown types' fields included). */
+    List<SceneNode> childNodes() {
+        List<SceneNode> result = new ArrayList<>();
+        for (Object value : fields.values()) {
+            if (value instanceof SceneNode node) {
+                result.add(node);
+            } else if (value instanceof List<?> list) {
+                for (Object item : list) {
+                    if (item instanceof SceneNode node) {
+                        result.add(node);
+                    }
+                }
+            }
+        }
+        return result;
+    }
+
+    Object get(String field) {
+        Object value = fields.get(field);
+        if (value != null || fields.containsKey(field)) {
+            return value;
+        }
+        if (type == null) {
+            return null;
+        }
+        FieldDef def = type.fields().get(field);
+        if (def == null) {
+            throw new IllegalArgumentException(typeName + " has no field " + field);
+        }
+        return def.defaultValue();
+    }
+
+    boolean bool(String field) {
+        return (Boolean) get(field);
+    }
+
+    int integer(String field) {
+        return (Integer) get(field);
+    }
+
+    double number(String field) {
+        return (Double) get(field);
+    }
+
+    float[] floats(String field) {
+        return (float[]) get(field);
+    }
+
+    int[] ints(String field) {
+        return (int[]) get(field);
+    }
+
+    @SuppressWarnings("unchecked")
+    List<String> strings(String field) {
+        return (List<String>) get(field);
+    }
+
+    SceneNode node(String field) {
+        return (SceneNode) get(field);
+    }
+
+    /**
+     * The node in a node field if it is of type {@code typeName}, else null: a field that holds
+     * a node type this loader does not build counts as empty.
+     */
+    SceneNode node(String field, String typeName) {
+        SceneNode node = node(field);
+        return node != null && node.is(typeName) ? node : null;
+    }
+
+    @SuppressWarnings("unchecked")
+    List<SceneNode> nodes(String field) {
+        Object value = get(field);
+        return value == null ? List.of() : (List<SceneNode>) value;
+    }
+
+    /** How messages name this node: {@code Transform 'LeftKnee'} or {@code Shape (line 7:5)}. */
+    String label() {
+        return defName != null ? typeName + " '" + defName + "'" : typeName + " (" + location + ")";
+    }
+
+    @Override
+    public String toString() {
+        return label();
+    }
+}
