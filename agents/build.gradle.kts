@@ -1,8 +1,8 @@
-import org.gradle.api.tasks.testing.logging.TestExceptionFormat
-
 plugins {
     `java-library`
 }
+
+apply(from = rootProject.file("gradle/java-conventions.gradle.kts"))
 
 group = "io.orchard"
 version = "0.1.0-SNAPSHOT"
@@ -21,16 +21,3 @@ dependencies {
     testRuntimeOnly(libs.junit.platform.launcher)
 }
 
-tasks.withType<JavaCompile>().configureEach {
-    options.release = 17
-    options.encoding = "UTF-8"
-    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
-}
-
-tasks.test {
-    useJUnitPlatform()
-    testLogging {
-        events("failed")
-        exceptionFormat = TestExceptionFormat.FULL
-    }
-}

@@ -1,8 +1,8 @@
-import org.gradle.api.tasks.testing.logging.TestExceptionFormat
-
 plugins {
     application
 }
+
+apply(from = rootProject.file("gradle/java-conventions.gradle.kts"))
 
 group = "io.orchard"
 version = "0.1.0-SNAPSHOT"
@@ -34,16 +34,3 @@ tasks.named<JavaExec>("run") {
     standardInput = System.`in`
 }
 
-tasks.withType<JavaCompile>().configureEach {
-    options.release = 17
-    options.encoding = "UTF-8"
-    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
-}
-
-tasks.test {
-    useJUnitPlatform()
-    testLogging {
-        events("failed")
-        exceptionFormat = TestExceptionFormat.FULL
-    }
-}

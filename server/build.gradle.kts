@@ -1,9 +1,9 @@
-import org.gradle.api.tasks.testing.logging.TestExceptionFormat
-
 plugins {
     `java-library`
     application
 }
+
+apply(from = rootProject.file("gradle/java-conventions.gradle.kts"))
 
 group = "io.orchard"
 version = "0.1.0-SNAPSHOT"
@@ -39,20 +39,6 @@ application {
 tasks.named<JavaExec>("run") {
     // The server reads commands from its console.
     standardInput = System.`in`
-}
-
-tasks.withType<JavaCompile>().configureEach {
-    options.release = 17
-    options.encoding = "UTF-8"
-    options.compilerArgs.addAll(listOf("-Xlint:all,-processing,-serial", "-parameters"))
-}
-
-tasks.test {
-    useJUnitPlatform()
-    testLogging {
-        events("failed")
-        exceptionFormat = TestExceptionFormat.FULL
-    }
 }
 
 // Stamp the build's version into the version resource, as Maven's resource filtering does.
