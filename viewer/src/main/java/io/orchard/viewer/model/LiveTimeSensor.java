@@ -12,6 +12,14 @@ package io.orchard.viewer.model;
  */
 final class LiveTimeSensor implements LiveNode {
 
+    /**
+     * Where the file's times lie on the viewer's clock. VRML counts time from 1970, so in a browser
+     * a one-shot sensor with startTime 0 finished long before the page loaded, while the viewer's
+     * clock starts at the game's start. Moving the file's times far into the past keeps their
+     * meaning: one-shot sensors stay idle until started, looping ones are already running.
+     */
+    static final double FILE_TIME_ORIGIN = -1e9;
+
     private final String name;
     private double cycleInterval;
     private boolean enabled;
@@ -27,8 +35,8 @@ final class LiveTimeSensor implements LiveNode {
         this.cycleInterval = source.number("cycleInterval");
         this.enabled = source.bool("enabled");
         this.loop = source.bool("loop");
-        this.startTime = source.number("startTime");
-        this.stopTime = source.number("stopTime");
+        this.startTime = source.number("startTime") + FILE_TIME_ORIGIN;
+        this.stopTime = source.number("stopTime") + FILE_TIME_ORIGIN;
     }
 
     @Override

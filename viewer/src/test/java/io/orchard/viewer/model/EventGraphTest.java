@@ -46,15 +46,18 @@ class EventGraphTest {
             return Stream.of(
                     Arguments.of("loop TRUE cycleInterval 2", new double[] {0.5, 2.5, 3.0},
                             new float[] {0.25f, 0.25f, 0.5f}),
+                    // The file's times count from 1970, as in VRML: one-shot sensors finished long ago.
                     Arguments.of("loop FALSE startTime 1 cycleInterval 2",
                             new double[] {0.5, 1.5, 2.5, 3.5, 9},
-                            new float[] {0f, 0.25f, 0.75f, 1f, 1f}),
+                            new float[] {0f, 0f, 0f, 0f, 0f}),
+                    Arguments.of("loop FALSE", new double[] {0.1, 0.5, 1.5},
+                            new float[] {0f, 0f, 0f}),
                     Arguments.of("enabled FALSE loop TRUE", new double[] {0.5, 1.5},
                             new float[] {0f, 0f}),
                     Arguments.of("loop TRUE stopTime 1.5", new double[] {1.25, 2, 3},
-                            new float[] {0.25f, 0.5f, 0.5f}),
+                            new float[] {0f, 0f, 0f}),
                     Arguments.of("loop FALSE startTime 2 stopTime 1", new double[] {2.5, 3.5},
-                            new float[] {0.5f, 1f}));
+                            new float[] {0f, 0f}));
         }
 
         @ParameterizedTest(name = "{0}")
@@ -174,7 +177,7 @@ class EventGraphTest {
                       geometry Box { }
                     }
                     DEF Fade ScalarInterpolator { key [0 1] keyValue [0 0.8] }
-                    DEF Clock TimeSensor { cycleInterval 4 }
+                    DEF Clock TimeSensor { loop TRUE cycleInterval 4 }
                     ROUTE Clock.fraction_changed TO Fade.set_fraction
                     ROUTE Fade.value_changed TO Skin.set_transparency
                     """);
@@ -251,7 +254,7 @@ class EventGraphTest {
             AgentModel model = TestModels.loadVrml("Guppy", """
                     DEF Probe Transform { }
                     DEF Ramp PositionInterpolator { key [0 1] keyValue [0 0 0, 1 0 0] }
-                    DEF Starter TimeSensor { cycleInterval 100 }
+                    DEF Starter TimeSensor { loop TRUE cycleInterval 100 }
                     DEF Clock TimeSensor { enabled FALSE loop TRUE cycleInterval 4 }
                     ROUTE Starter.isActive TO Clock.set_enabled
                     ROUTE Clock.fraction_changed TO Ramp.set_fraction
