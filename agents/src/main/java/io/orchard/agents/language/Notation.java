@@ -1,0 +1,99 @@
+package io.orchard.agents.language;
+
+import java.math.BigDecimal;
+import java.math.RoundingMode;
+import java.util.stream.Collectors;
+
+/**
+ * Writes goals and references in the compact one-line notation of {@link Goal#notation()}, e.g.
+ * {@code collect(3 banana on(table))}, {@code go-to(castle); collect(tomato)}. The grammar of
+ * the notation is in {@code docs/instructions.md}.
+ */
+final class Notation {
+
+    private Notation() {
+    }
+
+    static String of(Goal goal) {
+        if (goal instanceof Sequence sequence) {
+            return sequence.steps().stream().map(Notation::of).collect(Collectors.joining("; "));
+        }
+        if (goal instanceof GoTo goTo) {
+            return "go-to(" + of(goTo.destination()) + ")";
+        }
+        if (goal instanceof Cross cross) {
+            return "cross(" + of(cross.landmark()) + ")";
+        }
+        if (goal instanceof Head head) {
+            return "head(" + head.direction().wireName() + ")";
+        }
+        if (goal instanceof Move move) {
+            return "move(" + move.direction().wireName() + ")";
+        }
+        if (goal instanceof Collect collect) {
+            String count = collect.isAll() ? "all " : collect.count() == 1 ? "" : collect.count() + " ";
+            return "collect(" + count + of(collect.what()) + ")";
+        }
+        if (goal instanceof Turn turn) {
+            return "turn(" + number(turn.degrees()) + ")";
+        }
+        if (goal instanceof Face face) {
+            return "face(" + face.direction().wireName() + ")";
+        }
+        if (goal instanceof LookAt lookAt) {
+            return "look-at(" + of(lookAt.target()) + ")";
+        }
+        if (goal instanceof LookFor lookFor) {
+            return "look-for(" + of(lookFor.what()) + ")";
+        }
+        if (goal instanceof Explore explore) {
+            return explore.area() == null ? "explore" : "explore(" + of(explore.area()) + ")";
+        }
+        if (goal instanceof Follow follow) {
+            return "follow(" + of(follow.agent()) + ")";
+        }
+        if (goal instanceof Wait wait) {
+            return wait.isUntilTold() ? "wait" : "wait(" + number(wait.seconds()) + ")";
+        }
+        if (goal instanceof ComeBack) {
+            return "come-back";
+        }
+        if (goal instanceof Stop) {
+            return "stop";
+        }
+        if (goal instanceof CarryOn) {
+            return "carry-on";
+        }
+        throw new IllegalArgumentException("no notation for " + goal);
+    }
+
+    static String of(Reference reference) {
+        if (reference.kind() == Reference.Kind.PLACE) {
+            return of(reference.place());
+        }
+        StringBuilder text = new StringBuilder();
+        if (reference.distance() != null) {
+            text.append(reference.distance().wireName()).append(' ');
+        }
+        if (reference.size() != null) {
+            text.append(reference.size().wireName()).append(' ');
+        }
+        text.append(reference.name() != null ? reference.name() : reference.kind().wireName());
+        if (reference.place() != null) {
+            text.append(' ').append(of(reference.place()));
+        }
+        return text.toString();
+    }
+
+    static String of(Place place) {
+        if (place.relation() == Place.Relation.ON_GROUND) {
+            return "on-ground";
+        }
+        return place.relation().wireName() + "(" + (place.anchor() == null ? "here" : of(place.anchor())) + ")";
+    }
+
+    /** A number without needless digits: 90, 22.5, 0.333333. */
+    static String number(double value) {
+        return BigDecimal.valueOf(value).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
+    }
+}

@@ -1,0 +1,30 @@
+package io.orchard.agents.language;
+
+import java.util.HashSet;
+import java.util.Set;
+
+/**
+ * What the grammar knows of one sentence as it reads it: whom it is addressed to, what it last
+ * referred to (for "it", "them", "one", "there"), which fruit it last collected, which unknown
+ * words it took as agents' names, and what to answer if the clause it is reading fails.
+ */
+final class ParseContext {
+
+    /** The positions of unknown words taken as agents' names. */
+    final Set<Integer> namesTaken = new HashSet<>();
+
+    /** The agent the sentence is addressed to, or null. */
+    String addressee;
+
+    /** What the sentence last referred to, or null. */
+    Reference antecedent;
+
+    /** The fruit the sentence last asked to collect, or null. */
+    Reference lastCollected;
+
+    /** What the agent can do, to answer "I didn't understand ..." in the clause being read. */
+    String hint = Answers.CAN_DO;
+
+    /** What to ask when a pronoun in the clause being read refers to nothing. */
+    String question = Answers.WHAT_PICK;
+}

@@ -1,0 +1,246 @@
+package io.orchard.agents.language;
+
+import io.orchard.agents.language.Reference.Kind;
+import io.orchard.agents.language.Reference.Size;
+
+/**
+ * The agent's English restatement of a goal: "Going to pick up the nearest banana that lies on a
+ * table.", "Going to the castle, then picking up a tomato." Objects are "the" when they are
+ * unique (the castle, the river, the forest) or picked by a superlative, and "a" otherwise, since
+ * any object that fits will do.
+ */
+final class Restatement {
+
+    private static final String[] NUMBERS = {"zero", "one", "two", "three", "four", "five", "six", "seven", "eight",
+        "nine", "ten", "eleven", "twelve"};
+
+    private Restatement() {
+    }
+
+    static String of(Goal goal) {
+        String text;
+        if (goal instanceof Sequence sequence) {
+            StringBuilder steps = new StringBuilder(lead(sequence.steps().get(0)));
+            for (Goal step : sequence.steps().subList(1, sequence.steps().size())) {
+                steps.append(", then ").append(gerund(step));
+            }
+            text = steps.toString();
+        } else {
+            text = lead(goal);
+        }
+        return Character.toUpperCase(text.charAt(0)) + text.substring(1) + ".";
+    }
+
+    /** The first step as the agent announces it: "going to pick up a tomato". */
+    private static String lead(Goal goal) {
+        if (goal instanceof Collect collect) {
+            return "going to pick up " + collected(collect);
+        }
+        if (goal instanceof Cross cross) {
+            return "going to cross " + noun(cross.landmark());
+        }
+        return gerund(goal);
+    }
+
+    /** A step after the first: "picking up a tomato". */
+    private static String gerund(Goal goal) {
+        if (goal instanceof GoTo goTo) {
+            return "going " + destination(goTo.destination());
+        }
+        if (goal instanceof Cross cross) {
+            return "crossing " + noun(cross.landmark());
+        }
+        if (goal instanceof Head head) {
+            return "heading " + head.direction().wireName();
+        }
+        if (goal instanceof Move move) {
+            return switch (move.direction()) {
+                case FORWARD -> "going forward";
+                case BACKWARD -> "stepping back";
+                case LEFT -> "going to my left";
+                case RIGHT -> "going to my right";
+            };
+        }
+        if (goal instanceof ComeBack) {
+            return "coming back";
+        }
+        if (goal instanceof Collect collect) {
+            return "picking up " + collected(collect);
+        }
+        if (goal instanceof Turn turn) {
+            return turning(turn.degrees());
+        }
+        if (goal instanceof Face face) {
+            return "turning to face " + face.direction().wireName();
+        }
+        if (goal instanceof LookAt lookAt) {
+            return "turning to face " + noun(lookAt.target());
+        }
+        if (goal instanceof LookFor lookFor) {
+            return "looking for " + searched(lookFor.what());
+        }
+        if (goal instanceof Explore explore) {
+            return explore.area() == null ? "exploring" : "exploring " + area(explore.area());
+        }
+        if (goal instanceof Follow follow) {
+            return "following " + noun(follow.agent());
+        }
+        if (goal instanceof Stop) {
+            return "stopping";
+        }
+        if (goal instanceof Wait wait) {
+            return wait.isUntilTold() ? "waiting here" : "waiting here for " + duration(wait.seconds());
+        }
+        if (goal instanceof CarryOn) {
+            return "carrying on by myself";
+        }
+        throw new IllegalArgumentException("no restatement for " + goal);
+    }
+
+    /** One object of a reference, with its article: "a tree", "the castle", "the nearest banana on a table". */
+    static String noun(Reference reference) {
+        return phrase(reference, 1, false);
+    }
+
+    private static String collected(Collect collect) {
+        return phrase(collect.what(), collect.count(), false);
+    }
+
+    /** What is looked for: fruit in the plural unless one is picked out ("coconuts", "the nearest coconut"). */
+    private static String searched(Reference what) {
+        boolean one = what.distance() != null || what.size() == Size.LARGEST || what.size() == Size.SMALLEST;
+        return phrase(what, what.isFruit() && !one ? Collect.ALL : 1, true);
+    }
+
+    private static String phrase(Reference reference, int count, boolean bare) {
+        if (reference.kind() == Kind.PLACE) {
+            return area(reference);
+        }
+        boolean plural = count > 1;
+        StringBuilder core = new StringBuilder();
+        if (reference.distance() != null) {
+            core.append(reference.distance().wireName()).append(' ');
+        }
+        if (reference.size() != null) {
+            core.append(reference.size().wireName()).append(' ');
+        }
+        if (reference.name() != null) {
+            core.append(reference.name());
+        } else {
+            core.append(plural ? plural(reference.kind()) : reference.kind().wireName());
+        }
+        if (reference.place() != null) {
+            core.append(' ').append(relation(reference.place(), reference.isFruit(), plural));
+        }
+        String text = core.toString();
+        if (reference.name() != null && reference.distance() == null && reference.size() == null) {
+            return text;
+        }
+        if (count == Collect.ALL) {
+            return bare ? text : "all the " + text;
+        }
+        boolean definite = reference.distance() != null || reference.size() == Size.LARGEST
+                || reference.size() == Size.SMALLEST || reference.kind() == Kind.CASTLE
+                || reference.kind() == Kind.RIVER || reference.kind() == Kind.FOREST;
+        if (plural) {
+            String number = count < NUMBERS.length ? NUMBERS[count] : Integer.toString(count);
+            return (definite ? "the " : "") + number + " " + text;
+        }
+        if (definite) {
+            return "the " + text;
+        }
+        return ("aeiou".indexOf(text.charAt(0)) >= 0 ? "an " : "a ") + text;
+    }
+
+    private static String plural(Kind kind) {
+        return switch (kind) {
+            case FRUIT -> "fruit";
+            case TOMATO -> "tomatoes";
+            case FOREST -> "forests";
+            default -> kind.wireName() + "s";
+        };
+    }
+
+    /** Where a referred object is: "that lies on a table", "near the river", "north of the castle". */
+    private static String relation(Place place, boolean fruit, boolean plural) {
+        String lies = fruit ? (plural ? "that lie " : "that lies ") : "";
+        String hangs = fruit ? (plural ? "that hang " : "that hangs ") : "";
+        Reference anchor = place.anchor();
+        return switch (place.relation()) {
+            case ON -> lies + "on " + noun(anchor);
+            case IN -> (anchor.kind() == Kind.TREE ? hangs : "") + "in " + noun(anchor);
+            case UNDER -> lies + "under " + noun(anchor);
+            case ON_GROUND -> lies + "on the ground";
+            case NEAR -> "near " + noun(anchor);
+            case BEYOND -> "on the other side of " + noun(anchor);
+            case THIS_SIDE_OF -> "on this side of " + noun(anchor);
+            default -> anchor == null ? "to the " + place.relation().sector().wireName()
+                    : place.relation().sector().wireName() + " of " + noun(anchor);
+        };
+    }
+
+    /** Where to go: "to a tree", "near the castle", "to the other side of the castle". */
+    private static String destination(Reference reference) {
+        if (reference.kind() != Kind.PLACE) {
+            return "to " + noun(reference);
+        }
+        Place place = reference.place();
+        Reference anchor = place.anchor();
+        return switch (place.relation()) {
+            case ON -> "onto " + noun(anchor);
+            case IN -> "into " + noun(anchor);
+            case UNDER -> "under " + noun(anchor);
+            case ON_GROUND -> "down to the ground";
+            case NEAR -> "near " + noun(anchor);
+            case BEYOND -> "to the other side of " + noun(anchor);
+            case THIS_SIDE_OF -> "to this side of " + noun(anchor);
+            default -> anchor == null ? place.relation().sector().wireName()
+                    : place.relation().sector().wireName() + " of " + noun(anchor);
+        };
+    }
+
+    /** An area to explore: "the forest", "the other side of the river", "the area near the castle". */
+    private static String area(Reference reference) {
+        if (reference.kind() == Kind.FOREST) {
+            return noun(reference);
+        }
+        if (reference.kind() != Kind.PLACE) {
+            return "the area near " + noun(reference);
+        }
+        Place place = reference.place();
+        Reference anchor = place.anchor();
+        return switch (place.relation()) {
+            case IN -> noun(anchor);
+            case ON_GROUND -> "the ground";
+            case BEYOND -> "the other side of " + noun(anchor);
+            case THIS_SIDE_OF -> "this side of " + noun(anchor);
+            case ON -> "the area on " + noun(anchor);
+            case UNDER -> "the area under " + noun(anchor);
+            case NEAR -> "the area near " + noun(anchor);
+            default -> anchor == null ? "the " + place.relation().sector().wireName()
+                    : "the area " + place.relation().sector().wireName() + " of " + noun(anchor);
+        };
+    }
+
+    private static String turning(double degrees) {
+        long rounded = Math.round(degrees);
+        if (rounded == 90) {
+            return "turning left";
+        }
+        if (rounded == -90) {
+            return "turning right";
+        }
+        if (Math.abs(rounded) == 180) {
+            return "turning around";
+        }
+        return "turning " + Notation.number(Math.abs(degrees)) + " degrees to the " + (degrees > 0 ? "left" : "right");
+    }
+
+    private static String duration(double seconds) {
+        if (seconds >= 60 && seconds % 60 == 0) {
+            long minutes = (long) (seconds / 60);
+            return minutes + (minutes == 1 ? " minute" : " minutes");
+        }
+        return Notation.number(seconds) + (seconds == 1 ? " second" : " seconds");
+    }
+}
