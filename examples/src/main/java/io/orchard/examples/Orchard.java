@@ -23,6 +23,9 @@ public final class Orchard {
     /** The launcher's commands, in the order its help lists them. A new command is added here. */
     static final List<Command> COMMANDS = List.of(
             new ServerCommand(),
+            new AgentCommand(),
+            new AgentsCommand(),
+            new ParseCommand(),
             new ProtocolSchemaCommand());
 
     /** How the launcher is started, as the help shows it. */

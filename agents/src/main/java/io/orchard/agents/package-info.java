@@ -1,0 +1,62 @@
+/**
+ * What an agent's author touches: {@link io.orchard.agents.AgentController}, the base every Java
+ * agent extends, with {@link io.orchard.agents.AgentBody} (what the agent registers),
+ * {@link io.orchard.agents.AgentModel} (its visual model, read from its resources and checked),
+ * {@link io.orchard.agents.Perception} (one tick's view) and
+ * {@link io.orchard.agents.AgentStats} (what it did).
+ *
+ * <h2>A new agent</h2>
+ * Override {@code body()} and nothing else, and the agent explores and collects fruit on its own
+ * and takes instructions (the default {@code decide} is a {@link io.orchard.agents.behaviour.Forager}).
+ * To give it behaviour of your own, override {@code decide} too. This one walks about until it
+ * sees a fruit its hands reach, walks up to it, faces it and grasps it:
+ *
+ * <pre>{@code
+ * public final class Pippin extends AgentController {
+ *
+ *     public Pippin() {
+ *         super("Pippin");
+ *     }
+ *
+ *     @Override
+ *     protected AgentBody body() {
+ *         return AgentBody.builder().radius(0.4).speed(6).gripper("hands", 0.6, 0, 1.6).build();
+ *     }
+ *
+ *     @Override
+ *     protected void decide(Perception seen) {
+ *         Point2 here = seen.ground();
+ *         Gripper hands = bodyInForce().gripper();
+ *         Optional<PerceivedFruit> fruit = seen.nearestFruit(f -> f.position().y() < hands.maxHeight() - 0.01);
+ *         if (fruit.isEmpty()) {                    // nothing in view: walk on, somewhere new
+ *             if (!walking()) {
+ *                 walkTo(Bearings.ahead(here, heading() + random().nextGaussian(), 10));
+ *             }
+ *             return;
+ *         }
+ *         Point2 at = fruit.get().position().onGround();
+ *         double reach = bodyInForce().radius() + hands.reach() + fruit.get().radius();
+ *         if (here.distance(at) < reach - 0.1) {   // within reach: face it and grasp
+ *             face(at);
+ *             grasp(fruit.get().id());
+ *         } else if (!walking()) {          // walk up to it
+ *             walkTo(Bearings.ahead(here, Bearings.headingTowards(here, at), here.distance(at) - reach + 0.3));
+ *         }
+ *     }
+ *
+ *     public static void main(String[] args) throws Exception {
+ *         System.out.println(new Pippin().run("localhost", 7557).ranking());
+ *     }
+ * }
+ * }</pre>
+ *
+ * <p>It has no eyes for trees: a move through one is refused, and it simply tries another way
+ * next tick. The {@link io.orchard.agents.behaviour behaviours} do better: paths planned over the
+ * {@link io.orchard.agents.map.WorldMemory memory} that the controller keeps, a harvester that
+ * finds a spot in reach. The model: put {@code Pippin.x3d} next to the class and add
+ * {@code .model("Pippin.x3d")} to the body; its root must be {@code DEF Pippin Transform}.
+ *
+ * <p>The paper's five agents are in {@link io.orchard.agents.zoo}; {@code ./orchard agent} runs
+ * one of them ({@link io.orchard.agents.cli.AgentMain}).
+ */
+package io.orchard.agents;

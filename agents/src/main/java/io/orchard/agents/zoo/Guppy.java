@@ -1,0 +1,342 @@
+package io.orchard.agents.zoo;
+
+import io.orchard.agents.AgentBody;
+import io.orchard.agents.AgentController;
+import io.orchard.agents.Perception;
+import io.orchard.agents.behaviour.Harvester;
+import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.goal.Goal;
+import io.orchard.agents.map.KnownFruit;
+import io.orchard.protocol.value.Point2;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Predicate;
+
+/**
+ * Guppy, the paper's example agent (its Figure 5 gives Guppy's required VRML nodes): an
+ * anthropomorphic figure in a blue shirt that collects with its hands, from the ground, from the
+ * tables and, stretching its arms up, from most of the trees.
+ *
+ * <p>Body: radius 0.45, height 1.8, speed 7; hands reaching 0.7 beyond the body, fruit centres
+ * from 0 to 2.3 high; sight 45 units over 210 degrees. Model {@code models/Guppy.wrl} (VRML97,
+ * with Figure 5's Guppy Transform, GuppyMover and GuppyTSMover) with the joints Neck,
+ * LeftShoulder, LeftElbow, RightShoulder, RightElbow, LeftHip, LeftKnee, RightHip, RightKnee and
+ * the animations GuppyTSWalk and GuppyTSGrasp.
+ *
+ * <h2>Architecture: a goal stack</h2>
+ * Guppy keeps its intentions on a stack and works on the top one. The bottom of the stack is
+ * the standing goal <em>forage</em>, which never ends: it pushes <em>collect</em> for the known
+ * fruit that is cheapest to reach, else <em>explore</em>, else <em>wander</em> for a while.
+ * A goal that is done or has failed is popped, and the goal below carries on (told how its
+ * subgoal went). An instruction pushes its goal on top: <em>go to</em>, <em>seek</em> a kind of
+ * fruit (which pushes its own explore and collect), <em>explore</em>, <em>halt</em>; "carry on"
+ * pops every instructed goal; when an instructed goal is popped Guppy says how it went and
+ * returns to what was below: its autonomy.
+ */
+public final class Guppy extends AgentController {
+
+    private static final double SHOULDER_HEIGHT = 1.48;
+    private static final double ARM_LENGTH = 0.68;
+    private static final int MAX_STEPS_PER_TICK = 3;
+
+    /** A goal on the stack. */
+    private interface Task {
+        /** One tick's work: DONE or FAILED pops it. */
+        Status step();
+
+        /** A subgoal it pushed was popped. */
+        default void childFinished(Task child, Status status) {}
+
+        /** Whether a person asked for it (and is told when it is over). */
+        default boolean instructed() {
+            return false;
+        }
+
+        /** What to tell the person when it is over. */
+        default String report(Status status) {
+            return "";
+        }
+    }
+
+    private final Deque<Task> stack = new ArrayDeque<>();
+    private Skills skills;
+    private Pose pose;
+
+    /** Guppy. */
+    public Guppy() {
+        this("Guppy");
+    }
+
+    /** A Guppy with another name. */
+    public Guppy(String name) {
+        super(name);
+    }
+
+    @Override
+    protected AgentBody body() {
+        return AgentBody.builder()
+                .radius(0.45).height(1.8).speed(7)
+                .gripper("hands", 0.7, 0, 2.3)
+                .sight(45, Math.toRadians(210))
+                .model("models/Guppy.wrl", "Guppy")
+                .joints("Neck", "LeftShoulder", "LeftElbow", "RightShoulder", "RightElbow",
+                        "LeftHip", "LeftKnee", "RightHip", "RightKnee")
+                .walkAnimation(name() + "TSWalk")
+                .graspAnimation(name() + "TSGrasp")
+                .build();
+    }
+
+    @Override
+    protected void onRegistered() {
+        skills = new Skills(memory(), motor(), random());
+        pose = new Pose(motor());
+        skills.harvester.gesture(new Harvester.Gesture() {
+            @Override
+            public void reach(KnownFruit fruit) {
+                if (fruit.height() < 0.6) {
+                    play(name() + "TSGrasp", 1.5);
+                } else {
+                    double angle = Pose.armAngle(SHOULDER_HEIGHT, ARM_LENGTH, fruit.height());
+                    pose.set("LeftShoulder", angle).set("RightShoulder", angle).set("Neck", 0.4).holdFor(1);
+                }
+            }
+        });
+        stack.push(new Forage());
+    }
+
+    @Override
+    protected void onGoal(Goal goal) {
+        if (goal instanceof Goal.CarryOn) {
+            while (stack.size() > 1 && stack.peek().instructed()) {
+                stack.pop();
+            }
+            skills.navigator.reset();
+            say("Carrying on.");
+            return;
+        }
+        Task task;
+        if (goal instanceof Goal.GoTo go) {
+            task = new GoTo(go.target());
+        } else if (goal instanceof Goal.Collect collect) {
+            task = new Seek(collect);
+        } else if (goal instanceof Goal.Explore) {
+            task = new Explore(f -> false, true);
+        } else {
+            task = new Halt();
+        }
+        skills.navigator.reset();
+        stack.push(task);
+        say("OK: " + goal.describe() + ".");
+    }
+
+    @Override
+    protected void decide(Perception perception) {
+        pose.update();
+        for (int i = 0; i < MAX_STEPS_PER_TICK; i++) {
+            Task top = stack.peek();
+            Status status = top.step();
+            if (status != Status.RUNNING && stack.size() > 1) {
+                stack.pop();
+                if (top.instructed()) {
+                    say(top.report(status));
+                }
+                stack.peek().childFinished(top, status);
+                continue;
+            }
+            if (stack.peek() == top) {
+                return; // the top goal acted
+            }
+        }
+    }
+
+    private KnownFruit cheapest(Predicate<KnownFruit> wanted) {
+        List<KnownFruit> candidates = skills.harvester.candidates(wanted);
+        KnownFruit best = null;
+        double bestScore = Double.MAX_VALUE;
+        for (KnownFruit fruit : candidates.subList(0, Math.min(3, candidates.size()))) {
+            double way = skills.wayTo(fruit);
+            if (way == Double.MAX_VALUE) {
+                skills.harvester.giveUp(fruit.id());
+                continue;
+            }
+            double score = way / (1 + 0.25 * fruit.points());
+            if (score < bestScore) {
+                bestScore = score;
+                best = fruit;
+            }
+        }
+        return best;
+    }
+
+    // ---- the goals ---------------------------------------------------------------------------
+
+    /** The standing goal: collect, else explore, else wander. */
+    private final class Forage implements Task {
+        @Override
+        public Status step() {
+            KnownFruit fruit = cheapest(f -> true);
+            if (fruit != null) {
+                stack.push(new Collect(fruit));
+            } else if (!memory().coverage().unseen().isEmpty()) {
+                stack.push(new Explore(f -> true, false));
+            } else {
+                stack.push(new Wander(time() + 5));
+            }
+            return Status.RUNNING;
+        }
+    }
+
+    /** Collect one fruit. */
+    private final class Collect implements Task {
+        private final KnownFruit fruit;
+
+        Collect(KnownFruit fruit) {
+            this.fruit = fruit;
+        }
+
+        @Override
+        public Status step() {
+            return skills.harvester.collect(fruit);
+        }
+    }
+
+    /** Explore until a fruit that passes {@code found} is known (or, instructed, until all is seen). */
+    private final class Explore implements Task {
+        private final Predicate<KnownFruit> found;
+        private final boolean instructed;
+
+        Explore(Predicate<KnownFruit> found, boolean instructed) {
+            this.found = found;
+            this.instructed = instructed;
+        }
+
+        @Override
+        public Status step() {
+            if (!skills.harvester.candidates(found).isEmpty()) {
+                return Status.DONE;
+            }
+            return skills.explorer.step(skills.navigator) == Status.DONE ? Status.DONE : Status.RUNNING;
+        }
+
+        @Override
+        public boolean instructed() {
+            return instructed;
+        }
+
+        @Override
+        public String report(Status status) {
+            return "I have explored all I can reach.";
+        }
+    }
+
+    /** Walk about until a time, or until a fruit is known. */
+    private final class Wander implements Task {
+        private final double until;
+
+        Wander(double until) {
+            this.until = until;
+        }
+
+        @Override
+        public Status step() {
+            if (time() >= until || !skills.harvester.candidates(f -> true).isEmpty()) {
+                return Status.DONE;
+            }
+            skills.wanderer.step(skills.navigator);
+            return Status.RUNNING;
+        }
+    }
+
+    /** Go to a point (instructed). */
+    private final class GoTo implements Task {
+        private final Point2 target;
+
+        GoTo(Point2 target) {
+            this.target = target;
+        }
+
+        @Override
+        public Status step() {
+            return skills.navigator.goTo(target, 0.5);
+        }
+
+        @Override
+        public boolean instructed() {
+            return true;
+        }
+
+        @Override
+        public String report(Status status) {
+            return String.format(Locale.ROOT, status == Status.DONE ? "I am at (%.1f, %.1f)."
+                    : "I cannot find a way to (%.1f, %.1f).", target.x(), target.z());
+        }
+    }
+
+    /** Collect a fruit of a kind, or a named one (instructed): pushes explore and collect. */
+    private final class Seek implements Task {
+        private final Goal.Collect goal;
+        private final Predicate<KnownFruit> wanted;
+        private String collected;
+        private boolean exhausted;
+
+        Seek(Goal.Collect goal) {
+            this.goal = goal;
+            this.wanted = f -> (goal.kind() == null || f.kind() == goal.kind())
+                    && (goal.fruitId() == null || f.id().equals(goal.fruitId()));
+        }
+
+        @Override
+        public Status step() {
+            if (collected != null) {
+                return Status.DONE;
+            }
+            KnownFruit fruit = cheapest(wanted);
+            if (fruit != null) {
+                stack.push(new Collect(fruit));
+            } else if (!exhausted && !memory().coverage().unseen().isEmpty()) {
+                stack.push(new Explore(wanted, false));
+            } else {
+                return Status.FAILED;
+            }
+            return Status.RUNNING;
+        }
+
+        @Override
+        public void childFinished(Task child, Status status) {
+            if (child instanceof Collect collect && status == Status.DONE) {
+                collected = collect.fruit.kind().wireName() + " " + collect.fruit.id();
+            } else if (child instanceof Explore && skills.harvester.candidates(wanted).isEmpty()) {
+                exhausted = true;
+            }
+        }
+
+        @Override
+        public boolean instructed() {
+            return true;
+        }
+
+        @Override
+        public String report(Status status) {
+            return status == Status.DONE ? "Done: I collected the " + collected + "."
+                    : "I know of no fruit I can reach for '" + goal.describe() + "'.";
+        }
+    }
+
+    /** Stand still until told to carry on (instructed). */
+    private final class Halt implements Task {
+        @Override
+        public Status step() {
+            if (motor().walking()) {
+                motor().halt();
+            }
+            return Status.RUNNING;
+        }
+
+        @Override
+        public boolean instructed() {
+            return true;
+        }
+    }
+}

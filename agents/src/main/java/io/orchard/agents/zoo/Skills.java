@@ -1,0 +1,46 @@
+package io.orchard.agents.zoo;
+
+import io.orchard.agents.behaviour.Explorer;
+import io.orchard.agents.behaviour.Harvester;
+import io.orchard.agents.behaviour.Motor;
+import io.orchard.agents.behaviour.Navigator;
+import io.orchard.agents.behaviour.PathPlanner;
+import io.orchard.agents.behaviour.Wanderer;
+import io.orchard.agents.map.KnownFruit;
+import io.orchard.agents.map.WorldMemory;
+import java.util.random.RandomGenerator;
+
+/** The behaviours an agent of the zoo composes, made once it is registered and has a memory. */
+final class Skills {
+
+    final WorldMemory memory;
+    final Motor motor;
+    final PathPlanner planner;
+    final Navigator navigator;
+    final Harvester harvester;
+    final Explorer explorer;
+    final Wanderer wanderer;
+
+    Skills(WorldMemory memory, Motor motor, RandomGenerator random) {
+        this.memory = memory;
+        this.motor = motor;
+        this.planner = new PathPlanner(memory);
+        this.navigator = new Navigator(memory, motor, planner);
+        this.harvester = new Harvester(memory, motor, navigator);
+        this.explorer = new Explorer(memory, planner);
+        this.wanderer = new Wanderer(memory, random);
+    }
+
+    /** The length of the planned way to a spot from which the fruit is in reach; MAX_VALUE when there is none. */
+    double wayTo(KnownFruit fruit) {
+        var here = motor.position();
+        if (harvester.inReach(fruit, here)) {
+            return 0;
+        }
+        var spot = harvester.spotFor(fruit, here);
+        if (spot == null) {
+            return Double.MAX_VALUE;
+        }
+        return planner.plan(here, spot).map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
+    }
+}
