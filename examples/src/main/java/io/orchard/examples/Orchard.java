@@ -23,6 +23,7 @@ public final class Orchard {
     /** The launcher's commands, in the order its help lists them. A new command is added here. */
     static final List<Command> COMMANDS = List.of(
             new ServerCommand(),
+            new ViewerCommand(),
             new AgentCommand(),
             new AgentsCommand(),
             new ParseCommand(),
