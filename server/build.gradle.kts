@@ -17,6 +17,7 @@ dependencies {
     implementation(libs.slf4j.api)
 
     testImplementation(libs.logback.classic)
+    testImplementation(libs.jazzer.junit)
     testImplementation(libs.jmh.core)
     testAnnotationProcessor(libs.jmh.generator.annprocess)
     testImplementation(platform(libs.junit.bom))

@@ -32,7 +32,8 @@ final class BuildChecks {
             entry("junit", "junit.version"),
             entry("assertj", "assertj.version"),
             entry("jsonschema-generator", "jsonschema-generator.version"),
-            entry("jmh", "jmh.version"));
+            entry("jmh", "jmh.version"),
+            entry("jazzer", "jazzer.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

@@ -89,7 +89,13 @@ public final class MessageCodec {
 
     /** The message as one line of UTF-8 JSON, ending with a newline: what goes on the socket. */
     public byte[] encodeLine(Message message) {
-        byte[] json = encode(message).getBytes(StandardCharsets.UTF_8);
+        byte[] json;
+        try {
+            // Straight to UTF-8 bytes: no String in between.
+            json = writer.writeValueAsBytes(message);
+        } catch (JacksonException e) {
+            throw new IllegalStateException("cannot encode " + message, e);
+        }
         byte[] line = java.util.Arrays.copyOf(json, json.length + 1);
         line[json.length] = '\n';
         return line;

@@ -35,7 +35,7 @@ final class Samples {
             new GameControlMessage(16, GameCommand.START),
             new WelcomeMessage(1, 1, "0.1.0", Role.AGENT, new Bounds(-100, -100, 100, 100), 20, ClockMode.LOCKSTEP, 0),
             new ErrorMessage(6, ErrorCode.INVALID_VALUE, "Move: from.x must be a finite number, was Infinity"),
-            new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0),
+            new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0, "3f9c2a7e41b8d05c6e1f9a2b7c4d8e0f"),
             new ActionResultMessage(6, "Guppy", "Move", Outcome.REJECTED, "path crosses tree T17", null, 0),
             new GraspResultMessage(11, "Guppy", "F12", true, null, 2),
             new PerceptionMessage(43, "Guppy", HERE, 0.25,

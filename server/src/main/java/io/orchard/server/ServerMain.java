@@ -22,7 +22,7 @@ import java.util.Locale;
 /**
  * The world server's command line: {@code ./orchard server [options]}. It prints the game's state
  * once a second and the ranking at the end, and reads commands from its console: {@code start},
- * {@code pause}, {@code continue}, {@code status}, {@code stop}.
+ * {@code pause}, {@code continue}, {@code status}, {@code checkpoint [FILE]}, {@code stop}.
  */
 public final class ServerMain {
 
@@ -41,13 +41,19 @@ public final class ServerMain {
                     null)
             .value("record", "FILE", "record every message accepted and sent, as newline-delimited JSON", null)
             .value("token", "SECRET", "require clients to present this token in their hello", null)
+            .value("checkpoint", "FILE", "save the whole game to FILE: when fruit is collected, at the end, on the "
+                    + "console's checkpoint command and every --checkpoint-every seconds", null)
+            .value("checkpoint-every", "SECONDS", "with --checkpoint, also save every SECONDS of wall-clock time; "
+                    + "0 for never", "60")
+            .value("resume", "FILE", "continue the game saved in a checkpoint FILE (its world, seed, clock, scores; its "
+                    + "agents wait for their controllers' resume tokens)", null)
             .flag("quiet", "do not print the status line every second");
 
     private ServerMain() {}
 
     /** The help text of the server's command line. */
     public static String help() {
-        return OPTIONS.help() + "\nConsole commands: start, pause, continue, status, stop.\n";
+        return OPTIONS.help() + "\nConsole commands: start, pause, continue, status, checkpoint [FILE], stop.\n";
     }
 
     public static void main(String[] args) throws Exception {
@@ -79,7 +85,10 @@ public final class ServerMain {
         }
         try (WorldServer server = builder.start()) {
             out.printf(Locale.ROOT, "Orchard server %s listening on port %d, seed %d, %s clock%n", Version.current(),
-                    server.port(), server.seed(), options.string("clock"));
+                    server.port(), server.seed(), options.has("resume") ? "the saved game's" : options.string("clock"));
+            if (options.has("resume")) {
+                out.println("resumed from " + options.string("resume") + ": " + server.status());
+            }
             Thread commands = new Thread(() -> readCommands(server, console, out), "orchard-console");
             commands.setDaemon(true);
             commands.start();
@@ -125,6 +134,14 @@ public final class ServerMain {
         if (options.has("token")) {
             builder.token(options.string("token"));
         }
+        double every = options.number("checkpoint-every", 0, 1e7);
+        if (options.has("checkpoint")) {
+            builder.checkpoint(Path.of(options.string("checkpoint")), every > 0 ? Duration.ofMillis((long) (every * 1000))
+                    : null);
+        }
+        if (options.has("resume")) {
+            builder.resume(Path.of(options.string("resume")));
+        }
     }
 
     private static void readCommands(WorldServer server, InputStream console, PrintStream out) {
@@ -132,6 +149,10 @@ public final class ServerMain {
             String line;
             while ((line = in.readLine()) != null) {
                 String command = line.strip().toLowerCase(Locale.ROOT);
+                if (command.startsWith("checkpoint")) {
+                    checkpoint(server, line.strip().substring("checkpoint".length()).strip(), out);
+                    continue;
+                }
                 switch (command) {
                     case "" -> { }
                     case "start" -> server.startGame();
@@ -145,11 +166,28 @@ public final class ServerMain {
                     }
                     case "status" -> out.println(server.status());
                     case "stop", "quit" -> server.endGame("stopped from the console");
-                    default -> out.println("unknown command '" + command + "'; commands: start, pause, continue, status, stop");
+                    default -> out.println("unknown command '" + command
+                            + "'; commands: start, pause, continue, status, checkpoint [FILE], stop");
                 }
             }
         } catch (IOException e) {
             // The console closed: the server goes on without it.
+        }
+    }
+
+    private static void checkpoint(WorldServer server, String file, PrintStream out) {
+        try {
+            Path written = (file.isEmpty() ? server.checkpoint() : server.checkpoint(Path.of(file)))
+                    .get(30, java.util.concurrent.TimeUnit.SECONDS);
+            out.println("checkpoint written to " + written);
+        } catch (IllegalStateException e) {
+            out.println(e.getMessage() + " (checkpoint FILE)");
+        } catch (java.util.concurrent.ExecutionException e) {
+            out.println("checkpoint failed: " + e.getCause().getMessage());
+        } catch (java.util.concurrent.TimeoutException e) {
+            out.println("checkpoint not written after 30 s");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

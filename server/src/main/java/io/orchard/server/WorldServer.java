@@ -4,6 +4,8 @@ import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.net.NetLimits;
 import io.orchard.server.net.NetServer;
+import io.orchard.server.sim.Checkpoint;
+import io.orchard.server.sim.CheckpointFile;
 import io.orchard.server.sim.FileRecorder;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Phase;
@@ -12,6 +14,7 @@ import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.sim.TickLoop;
+import io.orchard.server.sim.TickStats;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
 import io.orchard.server.world.scenario.ScenarioFile;
@@ -53,15 +56,17 @@ public final class WorldServer implements AutoCloseable {
     private final Thread tickThread;
     private final Recorder recorder;
     private final CompletableFuture<List<Score>> gameOver;
+    private final Checkpoints checkpoints;
 
     private WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
-                        CompletableFuture<List<Score>> gameOver) {
+                        CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
         this.simulation = simulation;
         this.net = net;
         this.loop = loop;
         this.tickThread = tickThread;
         this.recorder = recorder;
         this.gameOver = gameOver;
+        this.checkpoints = checkpoints;
     }
 
     /** A builder with the defaults: port 7557 on loopback, a random seed, realtime at 20 ticks/s. */
@@ -72,6 +77,11 @@ public final class WorldServer implements AutoCloseable {
     /** The port the server listens on (the real one when built with port 0). */
     public int port() {
         return net.port();
+    }
+
+    /** The address and port the server listens on. */
+    public InetSocketAddress address() {
+        return net.address();
     }
 
     /** The seed the world was made from. */
@@ -98,9 +108,11 @@ public final class WorldServer implements AutoCloseable {
     public String status() {
         CompletableFuture<String> status = new CompletableFuture<>();
         simulation.execute(() -> status.complete(String.format(java.util.Locale.ROOT,
-                "%s  t=%.1fs  tick %d  agents %s  fruit left %d  scores %s",
+                "%s  t=%.1fs  tick %d  agents %s%s  fruit left %d  scores %s",
                 simulation.phase().name().toLowerCase(java.util.Locale.ROOT), simulation.time(), simulation.tick(),
-                simulation.agentNames(), simulation.fruitLeft(), simulation.ranking())));
+                simulation.agentNames(), simulation.waitingAgents().isEmpty() ? ""
+                        : "  waiting to be resumed " + simulation.waitingAgents(),
+                simulation.fruitLeft(), simulation.ranking())));
         try {
             return status.get(5, java.util.concurrent.TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -109,6 +121,46 @@ public final class WorldServer implements AutoCloseable {
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
             return "status unavailable: " + e;
         }
+    }
+
+    /**
+     * How long the simulation's thread worked per tick since the start or the last
+     * {@link #resetTickStats()}: median, 99th percentile and maximum. Safe from any thread.
+     */
+    public TickStats tickStats() {
+        return loop.stats();
+    }
+
+    /** Starts measuring tick times afresh (to leave out a warm-up, for example). Safe from any thread. */
+    public void resetTickStats() {
+        loop.resetStats();
+    }
+
+    /**
+     * Writes the whole game to the checkpoint file the server was built with, at the end of the
+     * current tick. Safe from any thread.
+     *
+     * @return completes with the file once it is written, or exceptionally with what went wrong
+     * @throws IllegalStateException when the server was built without a checkpoint file
+     */
+    public CompletableFuture<Path> checkpoint() {
+        if (checkpoints.file() == null) {
+            throw new IllegalStateException("this server has no checkpoint file: start it with one, or name a file");
+        }
+        return checkpoint(checkpoints.file());
+    }
+
+    /**
+     * Writes the whole game to {@code file} at the end of the current tick, atomically (a crash
+     * leaves the old file or the new one). Safe from any thread.
+     *
+     * @return completes with the file once it is written, or exceptionally with what went wrong
+     */
+    public CompletableFuture<Path> checkpoint(Path file) {
+        Objects.requireNonNull(file, "checkpoint file");
+        CompletableFuture<Path> written = new CompletableFuture<>();
+        simulation.checkpointAtTickEnd(state -> checkpoints.write(state, file, written));
+        return written;
     }
 
     /** The phase of the game. */
@@ -140,6 +192,7 @@ public final class WorldServer implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        checkpoints.close();
         net.close();
         recorder.close();
         gameOver.cancel(false);
@@ -161,6 +214,9 @@ public final class WorldServer implements AutoCloseable {
         private Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
         private Path scenario;
         private Path record;
+        private Path checkpointFile;
+        private Duration checkpointEvery;
+        private Path resume;
         private String token;
         private NetLimits limits = NetLimits.DEFAULT;
         private Placement placement = (name, radius) -> null;
@@ -243,6 +299,31 @@ public final class WorldServer implements AutoCloseable {
             return this;
         }
 
+        /**
+         * Save the whole game to {@code file} after every tick in which a fruit was collected, when
+         * the game ends, on {@link WorldServer#checkpoint()} and, unless {@code every} is null,
+         * every {@code every} of wall-clock time. Each write is atomic.
+         */
+        public Builder checkpoint(Path file, Duration every) {
+            this.checkpointFile = Objects.requireNonNull(file, "checkpoint file");
+            if (every != null && (every.isNegative() || every.isZero())) {
+                throw new IllegalArgumentException("checkpoint interval must be positive, was " + every);
+            }
+            this.checkpointEvery = every;
+            return this;
+        }
+
+        /**
+         * Continue the game saved in a checkpoint file instead of starting a new one: its world, seed,
+         * clock, scores and agents (which wait for their controllers to register them again with their
+         * resume tokens). The seed, clock, tick rate, time limit, wait-for count and scenario set on
+         * this builder are replaced by the checkpoint's; a recording is continued, not replaced.
+         */
+        public Builder resume(Path file) {
+            this.resume = Objects.requireNonNull(file, "checkpoint file to resume");
+            return this;
+        }
+
         /** Require clients to present this shared secret in their hello. */
         public Builder token(String token) {
             if (token != null && token.isEmpty()) {
@@ -277,12 +358,19 @@ public final class WorldServer implements AutoCloseable {
          *                     port cannot be bound
          */
         public WorldServer start() throws IOException {
-            long actualSeed = seed != null ? seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
-            World world = scenario != null ? World.fromScenario(ScenarioFile.read(scenario))
+            Checkpoint saved = resume != null ? CheckpointFile.read(resume) : null;
+            long actualSeed = saved != null ? saved.seed()
+                    : seed != null ? seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
+            World world = saved != null ? World.fromScenario(saved.world())
+                    : scenario != null ? World.fromScenario(ScenarioFile.read(scenario))
                     : WorldGenerator.standard(actualSeed).generate();
-            SimulationConfig config = new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
-                    SimulationConfig.DEFAULT.agentsPerSession(), SimulationConfig.DEFAULT.bodyLimits());
-            Recorder recorder = record != null ? FileRecorder.open(record) : Recorder.NONE;
+            SimulationConfig config = saved != null
+                    ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
+                            lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
+                            SimulationConfig.DEFAULT.bodyLimits())
+                    : new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
+                            SimulationConfig.DEFAULT.agentsPerSession(), SimulationConfig.DEFAULT.bodyLimits());
+            Recorder recorder = record != null ? FileRecorder.open(record, saved != null) : Recorder.NONE;
             CompletableFuture<List<Score>> over = new CompletableFuture<>();
             List<GameListener> all = new ArrayList<>(listeners);
             all.add(new GameListener() {
@@ -293,21 +381,40 @@ public final class WorldServer implements AutoCloseable {
             });
             Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
                     placement);
+            if (saved != null) {
+                simulation.restore(saved);
+                if (simulation.phase() == Phase.OVER) {
+                    over.complete(simulation.ranking());
+                }
+            }
+            Checkpoints checkpoints = new Checkpoints(checkpointFile);
+            if (checkpointFile != null) {
+                simulation.checkpointWhenScored(checkpoints::offer);
+            }
             NetServer net;
             try {
                 net = NetServer.start(new InetSocketAddress(bind, port), simulation, token, limits);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 recorder.close();
+                checkpoints.close();
                 throw new IOException("interrupted while binding port " + port, e);
             } catch (RuntimeException e) {
                 recorder.close();
+                checkpoints.close();
                 throw new IOException("cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
             }
             TickLoop loop = new TickLoop(simulation);
             Thread thread = new Thread(loop, "orchard-tick");
+            // The one thread the game waits for comes first. (The JVM passes this on to the system only
+            // where it may: on Linux with -XX:ThreadPriorityPolicy=1, as root.)
+            thread.setPriority(Thread.MAX_PRIORITY);
             thread.start();
-            return new WorldServer(simulation, net, loop, thread, recorder, over);
+            if (checkpointFile != null && checkpointEvery != null) {
+                checkpoints.every(checkpointEvery, () -> simulation.checkpointAtTickEnd(
+                        state -> checkpoints.write(state, checkpointFile, null)));
+            }
+            return new WorldServer(simulation, net, loop, thread, recorder, over, checkpoints);
         }
     }
 }

@@ -36,8 +36,9 @@ class ServerMainTest {
     @Test
     void helpListsEveryOptionAndTheConsoleCommands() throws Exception {
         assertThat(run("", "--help")).isZero();
-        assertThat(out()).contains("--port", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
-                "--record", "--token", "Console commands: start, pause, continue, status, stop");
+        assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
+                "--record", "--token", "--checkpoint", "--checkpoint-every", "--resume",
+                "Console commands: start, pause, continue, status, checkpoint [FILE], stop");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -46,6 +47,7 @@ class ServerMainTest {
         port too large   | --port=70000       | --port must be 0 to 65535, was 70000
         clock misspelled | --clock=lockstop   | --clock must be one of realtime, lockstep, was 'lockstop'
         seed not number  | --seed=abc         | --seed must be a whole number, was 'abc'
+        negative every   | --checkpoint-every=-1 | --checkpoint-every must be
         """)
     void aBadOptionIsNamedAndExitsWithTwo(String name, String arg, String message) throws Exception {
         assertThat(run("", arg)).isEqualTo(2);
@@ -65,6 +67,37 @@ class ServerMainTest {
         assertThat(run("status\nstart\n", "--port", "0", "--seed", "3", "--time-limit", "0.5", "--tick-rate", "50",
                 "--record", record.toString())).isZero();
         assertThat(out()).contains("listening on port", "seed 3", "Game over. Ranking:");
-        assertThat(java.nio.file.Files.readString(record)).contains("\"type\":\"GameStarted\"", "\"type\":\"GameOver\"");
+        assertThat(java.nio.file.Files.readString(record)).contains("\"type\":\"WorldSnapshot\"", "\"type\":\"GameStarted\"", "\"type\":\"GameOver\"");
+    }
+
+    @Test
+    void theConsoleCheckpointCommandAndTheEndOfTheGameSaveItAndAResumedEndedGameJustReportsIt() throws Exception {
+        Path checkpoint = dir.resolve("game.json");
+        Path elsewhere = dir.resolve("elsewhere.json");
+        assertThat(run("checkpoint\ncheckpoint " + elsewhere + "\nstart\n", "--port", "0", "--seed", "3",
+                "--time-limit", "0.5", "--tick-rate", "50", "--checkpoint", checkpoint.toString(), "--quiet")).isZero();
+        assertThat(out()).contains("checkpoint written to " + checkpoint, "checkpoint written to " + elsewhere);
+        io.orchard.server.sim.Checkpoint saved = io.orchard.server.sim.CheckpointFile.read(checkpoint);
+        assertThat(saved.seed()).isEqualTo(3);
+        assertThat(saved.phase()).isEqualTo("over");
+        assertThat(io.orchard.server.sim.CheckpointFile.read(elsewhere).seed()).isEqualTo(3);
+        out.reset();
+        assertThat(run("", "--port", "0", "--resume", checkpoint.toString(), "--quiet")).isZero();
+        assertThat(out()).contains("resumed from", "over", "Game over. Ranking:");
+    }
+
+    @Test
+    void aCheckpointCommandWithoutAFileSaysHowToNameOne() throws Exception {
+        assertThat(run("checkpoint\nstart\n", "--port", "0", "--seed", "3", "--time-limit", "0.3", "--tick-rate", "50",
+                "--quiet")).isZero();
+        assertThat(out()).contains("has no checkpoint file", "(checkpoint FILE)");
+    }
+
+    @Test
+    void anUnreadableCheckpointIsNamedAndExitsWithOne() throws Exception {
+        Path bad = dir.resolve("bad.json");
+        java.nio.file.Files.writeString(bad, "{\"format\":1}");
+        assertThat(run("", "--port", "0", "--resume", bad.toString())).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("bad.json is not a checkpoint");
     }
 }

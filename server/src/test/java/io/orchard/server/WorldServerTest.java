@@ -272,6 +272,168 @@ class WorldServerTest {
     }
 
     @Test
+    void anAgentThatStopsReadingIsCutOffWithoutStallingTheGame() throws Exception {
+        WorldServer server = started(server().limits(new NetLimits(100_000, 100_000, Duration.ofSeconds(60),
+                Duration.ofMillis(500), 4L << 20)));
+        Client viewer = new Client(server.port(), Role.VIEWER);
+        Socket stalled = new Socket();
+        stalled.setReceiveBufferSize(4096);
+        stalled.connect(new java.net.InetSocketAddress("127.0.0.1", server.port()));
+        open.add(stalled);
+        stalled.getOutputStream().write(("{\"type\":\"Hello\",\"seq\":1,\"protocolVersion\":1,\"role\":\"agent\","
+                + "\"client\":\"stalled\"}\n{\"type\":\"Register\",\"seq\":2,\"name\":\"Stall\",\"body\":" + bodyJson()
+                + "}\n").getBytes(StandardCharsets.UTF_8));
+        viewer.await(AgentAddedMessage.class, a -> a.agent().name().equals("Stall"));
+        Client talker = new Client(server.port(), Role.AGENT);
+        talker.ask(seq -> new RegisterMessage(seq, "Guppy", BODY, null));
+        String words = "blah ".repeat(199);
+        long ticksBefore = server.tickStats().ticks();
+        Thread flood = new Thread(() -> {
+            try {
+                // Instructions go to the stalled agent's connection alone: about 20 MB a second of them.
+                for (int i = 0; i < 60_000 && !Thread.currentThread().isInterrupted(); i++) {
+                    talker.connection.send(seq -> new io.orchard.protocol.message.InstructionMessage(seq, "Stall", words,
+                            "Guppy"));
+                    if (i % 200 == 199) {
+                        Thread.sleep(10);
+                    }
+                }
+            } catch (IOException | InterruptedException e) {
+                // the test is over
+            }
+        }, "flood");
+        flood.start();
+        try {
+            AgentRemovedMessage removed = viewer.await(AgentRemovedMessage.class, r -> r.agent().equals("Stall"));
+            assertThat(removed.reason()).isEqualTo("connection closed");
+            assertThat(server.tickStats().ticks()).as("ticks went on").isGreaterThan(ticksBefore);
+            assertThat(server.tickStats().max()).isLessThan(Duration.ofSeconds(1));
+            assertThat(server.status()).contains("agents [Guppy]");
+        } finally {
+            flood.interrupt();
+            talker.connection.close(); // a send blocked on a full socket ends with the connection
+            flood.join(10_000);
+        }
+    }
+
+    @Test
+    void aViewerThatReconnectsGetsAFullAndCorrectSnapshot() throws Exception {
+        WorldServer server = started(server().tickRate(50));
+        Client first = new Client(server.port(), Role.VIEWER);
+        first.await(WorldSnapshotMessage.class, s -> true);
+        Client agent = new Client(server.port(), Role.AGENT);
+        agent.ask(seq -> new RegisterMessage(seq, "Guppy", BODY, null));
+        agent.ask(seq -> new SetRotationMessage(seq, "Guppy", Rotation.heading(Math.PI)));
+        ActionResultMessage walk = (ActionResultMessage) agent.ask(seq -> new MoveMessage(seq, "Guppy", Vec3.ZERO,
+                Vec3.ground(0, 4)));
+        Thread.sleep((long) (walk.duration() * 1000) + 200);
+        GraspResultMessage grasp = (GraspResultMessage) agent.ask(seq -> new GraspRequestMessage(seq, "Guppy", "F1"));
+        assertThat(grasp.success()).as(grasp.reason()).isTrue();
+        first.connection.close();
+        ActionResultMessage away = (ActionResultMessage) agent.ask(seq -> new MoveMessage(seq, "Guppy",
+                Vec3.ground(0, 4), Vec3.ground(-3, 4)));
+        Thread.sleep((long) (away.duration() * 1000) + 200);
+
+        Client second = new Client(server.port(), Role.VIEWER);
+        WorldSnapshotMessage snapshot = second.await(WorldSnapshotMessage.class, s -> true);
+        AgentAddedMessage guppy = second.await(AgentAddedMessage.class, a -> true);
+        io.orchard.server.sim.Checkpoint truth = io.orchard.server.sim.CheckpointFile.read(
+                server.checkpoint(dir.resolve("truth.json")).get(10, TimeUnit.SECONDS));
+        assertThat(snapshot.fruit()).isEqualTo(truth.world().fruit());
+        assertThat(snapshot.fruit()).extracting(f -> f.id()).containsExactly("F2", "F4", "F5");
+        assertThat(snapshot.obstacles()).hasSize(2);
+        assertThat(snapshot.scores()).isEqualTo(truth.scores()).containsExactly(new io.orchard.protocol.value.Score(
+                "Guppy", 1, 1));
+        assertThat(guppy.agent().position()).isEqualTo(truth.agents().get(0).position());
+        assertThat(guppy.agent().position().x()).isCloseTo(-3, org.assertj.core.data.Offset.offset(1e-9));
+        assertThat(guppy.agent().heading()).isEqualTo(Math.PI);
+    }
+
+    @Test
+    void aSavedGameContinuesInANewServerAndItsAgentComesBackWithItsToken() throws Exception {
+        Path checkpoint = dir.resolve("game.checkpoint.json");
+        String token;
+        try (WorldServer first = server().tickRate(50).checkpoint(checkpoint, null).start()) {
+            Client agent = new Client(first.port(), Role.AGENT);
+            RegisteredMessage registered = (RegisteredMessage) agent.ask(seq -> new RegisterMessage(seq, "Guppy", BODY,
+                    null));
+            token = registered.resumeToken();
+            agent.ask(seq -> new SetRotationMessage(seq, "Guppy", Rotation.heading(Math.PI)));
+            ActionResultMessage walk = (ActionResultMessage) agent.ask(seq -> new MoveMessage(seq, "Guppy", Vec3.ZERO,
+                    Vec3.ground(0, 4)));
+            Thread.sleep((long) (walk.duration() * 1000) + 200);
+            assertThat(((GraspResultMessage) agent.ask(seq -> new GraspRequestMessage(seq, "Guppy", "F1"))).success())
+                    .isTrue();
+            assertThat(first.checkpoint().get(10, TimeUnit.SECONDS)).isEqualTo(checkpoint);
+        }
+        WorldServer second = started(WorldServer.builder().port(0).resume(checkpoint));
+        assertThat(second.status()).contains("paused", "waiting to be resumed [Guppy]", "fruit left 3");
+        Client intruder = new Client(second.port(), Role.AGENT);
+        Reply refused = intruder.ask(seq -> new RegisterMessage(seq, "Guppy", BODY, null));
+        assertThat(((ErrorMessage) refused).code()).isEqualTo(io.orchard.protocol.message.ErrorCode.NAME_IN_USE);
+        Client agent = new Client(second.port(), Role.AGENT);
+        RegisteredMessage back = (RegisteredMessage) agent.ask(seq -> new RegisterMessage(seq, "Guppy", BODY, null,
+                token));
+        assertThat(back.position().z()).isCloseTo(4, org.assertj.core.data.Offset.offset(1e-9));
+        assertThat(back.heading()).isEqualTo(Math.PI);
+        GraspResultMessage again = (GraspResultMessage) agent.ask(seq -> new GraspRequestMessage(seq, "Guppy", "F1"));
+        assertThat(again.success()).isFalse();
+        assertThat(second.status()).contains("running", "agent=Guppy, points=1").doesNotContain("waiting to be resumed");
+    }
+
+    @Test
+    void theServerListensOnlyWhereItIsToldToAndOnLoopbackByDefault() throws Exception {
+        WorldServer byDefault = started(server());
+        assertThat(byDefault.address().getAddress().isLoopbackAddress()).isTrue();
+        assertThat(byDefault.address().getAddress().getHostAddress()).isEqualTo("127.0.0.1");
+        WorldServer elsewhere = started(server().bind("127.0.0.2"));
+        assertThat(elsewhere.address().getAddress().getHostAddress()).isEqualTo("127.0.0.2");
+        assertThatThrownBy(() -> new Socket("127.0.0.1", elsewhere.port()).close())
+                .isInstanceOf(java.net.ConnectException.class);
+        ProtocolConnection there = ProtocolConnection.connect("127.0.0.2", elsewhere.port(), Role.VIEWER, "test",
+                m -> { });
+        open.add(there);
+        assertThat(there.welcome().role()).isEqualTo(Role.VIEWER);
+    }
+
+    @Test
+    void aLineLeftUnfinishedClosesTheConnection() throws Exception {
+        WorldServer server = started(server().limits(NetLimits.DEFAULT.withLineDeadline(Duration.ofMillis(300))));
+        try (RawClient raw = new RawClient(server.port())) {
+            raw.send("{\"type\":\"Hello\",\"seq\":1,\"protocolVersion\":1,\"role\":\"agent\",\"client\":\"raw\"}");
+            assertThat(raw.read()).contains("Welcome");
+            raw.out.write("{\"type\":\"EndTurn\",\"seq\":".getBytes(StandardCharsets.UTF_8));
+            raw.out.flush();
+            assertThat(raw.readUntil("\"code\"")).contains("\"code\":\"idle\"").contains("unfinished");
+            assertThat(raw.read()).isNull();
+        }
+    }
+
+    @Test
+    void connectionsBeyondTheCapAreRefused() throws Exception {
+        WorldServer server = started(server().limits(NetLimits.DEFAULT.withMaxConnections(2)));
+        new Client(server.port(), Role.VIEWER);
+        new Client(server.port(), Role.AGENT);
+        try (RawClient raw = new RawClient(server.port())) {
+            assertThat(raw.read()).contains("too_many_agents").contains("at most 2 connections");
+            assertThat(raw.read()).isNull();
+        }
+    }
+
+    @Test
+    void aConnectionThatClosesWhileRegisteringLeavesNoAgentBehind() throws Exception {
+        WorldServer server = started(server());
+        Client viewer = new Client(server.port(), Role.VIEWER);
+        try (RawClient raw = new RawClient(server.port())) {
+            raw.send("{\"type\":\"Hello\",\"seq\":1,\"protocolVersion\":1,\"role\":\"agent\",\"client\":\"raw\"}"
+                    + "\n{\"type\":\"Register\",\"seq\":2,\"name\":\"Guppy\",\"body\":" + bodyJson() + "}");
+        }
+        assertThat(viewer.await(AgentRemovedMessage.class, r -> r.agent().equals("Guppy")).reason())
+                .isEqualTo("connection closed");
+        assertThat(server.status()).contains("agents []", "agent=Guppy, points=0");
+    }
+
+    @Test
     void theSameSeedAndActionsInLockstepGiveByteIdenticalRecordings() throws Exception {
         Path first = dir.resolve("first.ndjson");
         Path second = dir.resolve("second.ndjson");

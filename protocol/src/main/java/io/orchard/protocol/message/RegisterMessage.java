@@ -14,15 +14,25 @@ import io.orchard.protocol.value.Nullable;
  * @param name the agent's unique name
  * @param body the body the agent asks for; the server caps it at its limits
  * @param model the agent's visual model; viewers show a placeholder without one
+ * @param resumeToken the token of an earlier registration of this name (from its
+ *                    {@link RegisteredMessage}), to get that agent back after a reconnection or a
+ *                    server restart: its place, heading, body and score; null for a new agent
  */
 public record RegisterMessage(long seq,
                               String name,
                               Body body,
-                              @Nullable ModelSpec model) implements ClientMessage {
+                              @Nullable ModelSpec model,
+                              @Nullable String resumeToken) implements ClientMessage {
 
     public RegisterMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(name, "name");
         Checks.present(body, "body");
+        Checks.optionalText(resumeToken, "resumeToken");
+    }
+
+    /** A registration of a new agent, without a resume token. */
+    public RegisterMessage(long seq, String name, Body body, @Nullable ModelSpec model) {
+        this(seq, name, body, model, null);
     }
 }

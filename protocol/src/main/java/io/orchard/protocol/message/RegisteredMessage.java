@@ -2,6 +2,7 @@ package io.orchard.protocol.message;
 
 import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Vec3;
 
 /**
@@ -13,12 +14,15 @@ import io.orchard.protocol.value.Vec3;
  * @param body the body in force
  * @param position where the agent stands
  * @param heading its heading in radians
+ * @param resumeToken a secret that gets this agent back when its controller registers the same
+ *                    name with it after a dropped connection or a server restart; keep it private
  */
 public record RegisteredMessage(long seq,
                                 String agent,
                                 Body body,
                                 Vec3 position,
-                                double heading) implements ServerMessage, Reply {
+                                double heading,
+                                @Nullable String resumeToken) implements ServerMessage, Reply {
 
     public RegisteredMessage {
         Checks.nonNegative(seq, "seq");
@@ -26,5 +30,11 @@ public record RegisteredMessage(long seq,
         Checks.present(body, "body");
         Checks.present(position, "position");
         Checks.finite(heading, "heading");
+        Checks.optionalText(resumeToken, "resumeToken");
+    }
+
+    /** An answer without a resume token. */
+    public RegisteredMessage(long seq, String agent, Body body, Vec3 position, double heading) {
+        this(seq, agent, body, position, heading, null);
     }
 }

@@ -10,6 +10,7 @@ import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.ProtocolException;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.value.Checks;
 import java.util.List;
 
 /**
@@ -27,13 +28,21 @@ final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
         this.codec = codec;
     }
 
+    /**
+     * The problem as an error may carry it: the codec quotes what it could not read, which a hostile
+     * line can make longer than an error's text may be.
+     */
+    static String shorten(String problem) {
+        return problem.length() <= Checks.MAX_TEXT ? problem : problem.substring(0, Checks.MAX_TEXT - 3) + "...";
+    }
+
     @Override
     protected void decode(ChannelHandlerContext ctx, ByteBuf frame, List<Object> out) {
         byte[] line = ByteBufUtil.getBytes(frame);
         try {
             out.add(codec.decodeClient(line));
         } catch (ProtocolException e) {
-            ErrorMessage error = new ErrorMessage(SeqSniffer.seqOf(line), e.code(), e.getMessage());
+            ErrorMessage error = new ErrorMessage(SeqSniffer.seqOf(line), e.code(), shorten(e.getMessage()));
             if (e.code() == ErrorCode.LINE_TOO_LONG) {
                 ctx.writeAndFlush(error).addListener(ChannelFutureListener.CLOSE);
             } else {

@@ -43,16 +43,16 @@ public final class NetServer implements AutoCloseable {
             throws InterruptedException {
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, new DefaultThreadFactory("orchard-accept", true),
                 NioIoHandler.newFactory());
-        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(0, new DefaultThreadFactory("orchard-io", true),
-                NioIoHandler.newFactory());
+        // One I/O thread per core, not Netty's two: the tick thread needs a core of its own.
+        EventLoopGroup workers = new MultiThreadIoEventLoopGroup(Runtime.getRuntime().availableProcessors(),
+                new DefaultThreadFactory("orchard-io", true), NioIoHandler.newFactory());
         try {
             Channel channel = new ServerBootstrap()
                     .group(boss, workers)
                     .channel(NioServerSocketChannel.class)
                     .option(ChannelOption.SO_BACKLOG, 1024)
                     .childOption(ChannelOption.TCP_NODELAY, true)
-                    .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK,
-                            new WriteBufferWaterMark(1024 * 1024, 16 * 1024 * 1024))
+                    .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK, waterMark(limits))
                     .childHandler(new ServerInitializer(new MessageCodec(), inbox, token, limits))
                     .bind(address).sync().channel();
             return new NetServer(boss, workers, channel);
@@ -61,6 +61,20 @@ public final class NetServer implements AutoCloseable {
             workers.shutdownGracefully(0, 0, TimeUnit.SECONDS);
             throw e;
         }
+    }
+
+    /**
+     * A channel turns unwritable (its client is behind) at a quarter of the bytes that cut a client
+     * off, at most 16 MiB, so that the grace starts well before the cap.
+     */
+    static WriteBufferWaterMark waterMark(NetLimits limits) {
+        int high = (int) Math.min(16L << 20, Math.max(64L << 10, limits.maxPendingBytes() / 4));
+        return new WriteBufferWaterMark(high / 2, high);
+    }
+
+    /** The address and port the server listens on. */
+    public InetSocketAddress address() {
+        return (InetSocketAddress) channel.localAddress();
     }
 
     /** The port the server listens on. */

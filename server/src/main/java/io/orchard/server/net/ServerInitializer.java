@@ -19,6 +19,8 @@ final class ServerInitializer extends ChannelInitializer<SocketChannel> {
     private final String token;
     private final NetLimits limits;
     private final AtomicLong sessionIds = new AtomicLong();
+    private final Admission admission;
+    private final TickWrites writes = new TickWrites();
 
     ServerInitializer(MessageCodec codec, Inbox inbox, String token, NetLimits limits) {
         this.decoder = new MessageDecoder(codec);
@@ -26,17 +28,20 @@ final class ServerInitializer extends ChannelInitializer<SocketChannel> {
         this.inbox = inbox;
         this.token = token;
         this.limits = limits;
+        this.admission = new Admission(limits.maxConnections());
     }
 
     @Override
     protected void initChannel(SocketChannel channel) {
         ChannelPipeline pipeline = channel.pipeline();
-        pipeline.addLast("idle", new IdleStateHandler(limits.idleTimeout().toMillis(), 0, 0, TimeUnit.MILLISECONDS));
-        // The encoder sits near the head so that the error every later stage may write gets encoded.
+        // The encoder sits at the head so that the error every later stage may write gets encoded.
         pipeline.addLast("encoder", encoder);
+        pipeline.addLast("admission", admission);
+        pipeline.addLast("idle", new IdleStateHandler(limits.idleTimeout().toMillis(), 0, 0, TimeUnit.MILLISECONDS));
+        pipeline.addLast("deadline", new LineDeadline(limits.lineDeadline(), System::nanoTime));
         pipeline.addLast("frame", new LineBasedFrameDecoder(MessageCodec.MAX_LARGE_LINE_BYTES + 1, true, true));
         pipeline.addLast("flood", new FloodGuard(limits.messagesPerSecond(), limits.burst(), System::nanoTime));
         pipeline.addLast("decoder", decoder);
-        pipeline.addLast("session", new SessionHandler(inbox, sessionIds, token, limits));
+        pipeline.addLast("session", new SessionHandler(inbox, sessionIds, token, limits, writes));
     }
 }

@@ -31,9 +31,11 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
     private final AtomicLong sessionIds;
     private final byte[] token;
     private final NetLimits limits;
+    private final TickWrites writes;
     private NettySession session;
 
-    SessionHandler(Inbox inbox, AtomicLong sessionIds, String token, NetLimits limits) {
+    SessionHandler(Inbox inbox, AtomicLong sessionIds, String token, NetLimits limits, TickWrites writes) {
+        this.writes = writes;
         this.inbox = inbox;
         this.sessionIds = sessionIds;
         this.token = token == null ? null : token.getBytes(StandardCharsets.UTF_8);
@@ -66,7 +68,7 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                     ? "this server requires a token in Hello" : "wrong token");
             return;
         }
-        session = new NettySession(sessionIds.incrementAndGet(), hello.role(), ctx.channel(), limits);
+        session = new NettySession(sessionIds.incrementAndGet(), hello.role(), ctx.channel(), limits, writes);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);

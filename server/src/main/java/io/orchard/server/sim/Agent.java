@@ -18,6 +18,8 @@ final class Agent {
     final ClientSession owner;
     final Body body;
     final ModelSpec model;
+    /** The secret that gets this agent back after a dropped connection or a restart. */
+    final String resumeToken;
     final Set<String> joints = new LinkedHashSet<>();
     final Set<String> timeSensors = new LinkedHashSet<>();
     Vec3 position;
@@ -26,9 +28,13 @@ final class Agent {
     boolean perceptionRequested;
     int perceptionEvery;
     long nextPerceptionTick = -1;
+    /** The order agents joined in: earlier agents win ties, as they are applied first. */
+    long joined;
 
-    Agent(String name, ClientSession owner, Body body, ModelSpec model, Vec3 position, double heading) {
+    Agent(String name, ClientSession owner, Body body, ModelSpec model, Vec3 position, double heading,
+          String resumeToken) {
         this.name = name;
+        this.resumeToken = resumeToken;
         this.owner = owner;
         this.body = body;
         this.model = model;

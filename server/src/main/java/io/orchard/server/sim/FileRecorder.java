@@ -2,7 +2,8 @@ package io.orchard.server.sim;
 
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.Message;
-import java.io.BufferedWriter;
+import java.io.ByteArrayOutputStream;
+import java.io.FileOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
@@ -14,25 +15,36 @@ import java.util.Locale;
  * Writes a game's record as newline-delimited JSON, one line per message:
  * {@code {"tick":12,"time":0.6,"dir":"in","session":3,"msg":{...}}} for a message the server
  * accepted, {@code "dir":"out"} with {@code "to":"client"|"all"|"viewers"|"agents"} for one it sent.
- * Times are simulated, never the wall clock, so the same game gives the same bytes. Each line is
- * flushed as it is written: a killed server leaves a record up to its last message.
+ * Times are simulated, never the wall clock, so the same game gives the same bytes. Resume tokens
+ * are left out: a record may be shared.
+ *
+ * <p>Lines are collected and written at the end of every half tick, whole lines in one write, so
+ * that a killed server leaves a record of complete lines up to its last tick.
  */
 public final class FileRecorder implements Recorder {
 
-    private final BufferedWriter out;
+    private static final int WRITE_AT = 1 << 16;
+
+    private final FileOutputStream out;
+    private final ByteArrayOutputStream pending = new ByteArrayOutputStream(WRITE_AT);
     private final MessageCodec codec = new MessageCodec();
 
-    private FileRecorder(BufferedWriter out) {
+    private FileRecorder(FileOutputStream out) {
         this.out = out;
     }
 
     /** Opens (and truncates) {@code file} for recording. */
     public static FileRecorder open(Path file) throws IOException {
+        return open(file, false);
+    }
+
+    /** Opens {@code file} for recording, after what it holds when {@code append} (a resumed game goes on). */
+    public static FileRecorder open(Path file, boolean append) throws IOException {
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null) {
             Files.createDirectories(parent);
         }
-        return new FileRecorder(Files.newBufferedWriter(file, StandardCharsets.UTF_8));
+        return new FileRecorder(new FileOutputStream(file.toFile(), append));
     }
 
     @Override
@@ -48,20 +60,38 @@ public final class FileRecorder implements Recorder {
     }
 
     private void write(long tick, double time, String fields, Message message) {
+        byte[] line = ("{\"tick\":" + tick + ",\"time\":" + time + "," + fields + ",\"msg\":" + codec.encode(message)
+                + "}\n").getBytes(StandardCharsets.UTF_8);
+        pending.write(line, 0, line.length);
+        if (pending.size() >= WRITE_AT) {
+            flush();
+        }
+    }
+
+    @Override
+    public void flush() {
+        if (pending.size() == 0) {
+            return;
+        }
         try {
-            out.write("{\"tick\":" + tick + ",\"time\":" + time + "," + fields + ",\"msg\":" + codec.encode(message) + "}\n");
-            out.flush();
+            pending.writeTo(out);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the recording", e);
+        } finally {
+            pending.reset();
         }
     }
 
     @Override
     public void close() {
         try {
-            out.close();
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot close the recording", e);
+            flush();
+        } finally {
+            try {
+                out.close();
+            } catch (IOException e) {
+                throw new UncheckedIOException("cannot close the recording", e);
+            }
         }
     }
 }

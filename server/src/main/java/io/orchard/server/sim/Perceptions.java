@@ -82,6 +82,7 @@ final class Perceptions {
         private final double facingX;
         private final double facingZ;
         private final double cosHalfField;
+        private final boolean castleNear;
         private final List<PerceivedObject> objects = new ArrayList<>();
         private final List<PerceivedFruit> fruit = new ArrayList<>();
 
@@ -91,6 +92,7 @@ final class Perceptions {
             this.facingX = -Math.sin(agent.heading);
             this.facingZ = -Math.cos(agent.heading);
             this.cosHalfField = Math.cos(halfField);
+            this.castleNear = world.castleNear(agent.position.onGround(), agent.body.sight().range());
         }
 
         @Override
@@ -121,7 +123,7 @@ final class Perceptions {
             if (distance > 1e-9 && halfField < Math.PI && dx * facingX + dz * facingZ < cosHalfField * distance) {
                 return false;
             }
-            return !world.castleHides(agent.position.onGround(), new Point2(x, z));
+            return !castleNear || !world.castleHides(agent.position.onGround(), new Point2(x, z));
         }
 
         RelativePosition relative(double x, double z) {

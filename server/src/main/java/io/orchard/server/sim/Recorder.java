@@ -38,6 +38,9 @@ public interface Recorder extends AutoCloseable {
     /** A message the simulation sent; {@code session} is 0 unless {@code to} is {@link Audience#CLIENT}. */
     void sent(long tick, double time, Audience to, long session, Message message);
 
+    /** Writes out what was recorded so far; called at the end of every half tick. */
+    default void flush() {}
+
     @Override
     void close();
 }

@@ -30,6 +30,15 @@ final class Scoreboard {
         return kind.points();
     }
 
+    /** How many agents have a score. */
+    int size() {
+        return scores.size();
+    }
+
+    boolean has(String agent) {
+        return scores.containsKey(agent);
+    }
+
     void restore(Score score) {
         scores.put(score.agent(), score);
     }

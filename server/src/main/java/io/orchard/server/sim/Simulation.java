@@ -30,12 +30,15 @@ import io.orchard.protocol.value.Score;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.Recorder.Audience;
 import io.orchard.server.world.World;
+import java.security.MessageDigest;
+import java.security.SecureRandom;
 import java.util.ArrayList;
+import java.util.HexFormat;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Random;
+import java.util.function.Consumer;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -54,6 +57,12 @@ import java.util.concurrent.TimeUnit;
  */
 public final class Simulation implements Inbox {
 
+    /** The most different agent names a game takes: each keeps a score for the whole game. */
+    static final int MAX_NAMES = 100_000;
+
+    /** {@link #MAX_NAMES}, smaller in tests. */
+    int maxNames = MAX_NAMES;
+
     /** Cell size of the grid that finds agents near a perceiving agent. */
     private static final double PERCEPTION_CELL = 25;
 
@@ -61,11 +70,14 @@ public final class Simulation implements Inbox {
     private final SimulationConfig config;
     private final long seed;
     private final String serverVersion;
-    private final Recorder recorder;
+    /** Where the game is recorded; nothing after the game's end, so that the same game gives the same record. */
+    private Recorder recorder;
     private final List<GameListener> listeners;
-    private final MessageCodec codec = new MessageCodec();
+    /** Immutable and costly to build: one for every simulation. */
+    private static final MessageCodec CODEC = new MessageCodec();
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
-    private final Random random;
+    private final GameRandom random;
+    private final SecureRandom secrets = new SecureRandom();
     private final Placement placement;
     private final Actions actions;
     private final Perceptions perceptions;
@@ -73,6 +85,8 @@ public final class Simulation implements Inbox {
     private final Walking walking;
 
     final Map<Long, ClientSession> sessions = new TreeMap<>();
+    private final Map<Long, ClientSession> viewers = new TreeMap<>();
+    private final Map<Long, ClientSession> agentClients = new TreeMap<>();
     final Map<String, Agent> agents = new LinkedHashMap<>();
     final Scoreboard scores = new Scoreboard();
     private Phase phase = Phase.WAITING;
@@ -80,6 +94,16 @@ public final class Simulation implements Inbox {
     private double time;
     private int fruitAtStart;
     private boolean scoresChanged;
+    private long joins;
+    /** Agents of a restored game, waiting for their controllers: their names are reserved. */
+    private final Map<String, Checkpoint.SavedAgent> waiting = new LinkedHashMap<>();
+    /** Agents whose connection dropped, kept so that their controllers can get them back. */
+    private final Map<String, Checkpoint.SavedAgent> departed = new LinkedHashMap<>();
+    /** Whether a restored game continues by itself once every waiting agent is back. */
+    private boolean continueWhenAllBack;
+    private boolean overSaved;
+    private final List<Consumer<Checkpoint>> checkpointRequests = new ArrayList<>();
+    private Consumer<Checkpoint> onScore;
 
     public Simulation(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
                       List<GameListener> listeners) {
@@ -95,12 +119,14 @@ public final class Simulation implements Inbox {
         this.serverVersion = serverVersion;
         this.recorder = recorder;
         this.listeners = List.copyOf(listeners);
-        this.random = new Random(seed ^ 0x5DEECE66DL);
+        this.random = new GameRandom(seed ^ 0x5DEECE66DL);
         this.placement = placement;
         this.walking = new Walking(this);
         this.actions = new Actions(this, world, walking);
         this.perceptions = new Perceptions(world);
         this.grasps = new Grasps(this, world);
+        // A recording must replay with no viewer connected, so it opens with the world as viewers see it.
+        recorder.sent(tick, time, Audience.VIEWERS, 0, snapshot());
     }
 
     // ---- Inbox: any thread -------------------------------------------------------------------
@@ -153,6 +179,7 @@ public final class Simulation implements Inbox {
     void applyBuffered(List<Event> events) {
         apply(events);
         flushAll();
+        takeCheckpoints(false);
     }
 
     /** The first half of a tick: the clock and the perceptions asked for. */
@@ -188,6 +215,7 @@ public final class Simulation implements Inbox {
 
     void endTick(List<Event> events) {
         apply(events);
+        boolean scored = false;
         if (phase == Phase.RUNNING) {
             grasps.resolve(tick, time);
             time = (tick + 1) * config.tickSeconds();
@@ -195,6 +223,7 @@ public final class Simulation implements Inbox {
             if (scoresChanged) {
                 broadcast(new io.orchard.protocol.message.ScoreUpdateMessage(tick, scores.ranking()), Audience.ALL);
                 scoresChanged = false;
+                scored = true;
             }
             long ended = tick;
             tick++;
@@ -204,6 +233,7 @@ public final class Simulation implements Inbox {
             grasps.clear();
         }
         flushAll();
+        takeCheckpoints(scored || phase == Phase.OVER && !overSaved);
     }
 
     private void apply(List<Event> events) {
@@ -217,7 +247,7 @@ public final class Simulation implements Inbox {
             } else if (event instanceof Event.Disconnected gone) {
                 leave(gone.session(), gone.reason());
             } else if (event instanceof Event.Received received && sessions.containsKey(received.session().id())) {
-                recorder.accepted(tick, time, received.session().id(), received.message());
+                recorder.accepted(tick, time, received.session().id(), withoutSecrets(received.message()));
                 handle(received.session(), received.message());
             }
         }
@@ -225,6 +255,7 @@ public final class Simulation implements Inbox {
 
     private void join(ClientSession session) {
         sessions.put(session.id(), session);
+        (session.role() == Role.VIEWER ? viewers : agentClients).put(session.id(), session);
         if (session.role() == Role.VIEWER) {
             send(session, snapshot());
             for (Agent agent : agents.values()) {
@@ -237,12 +268,19 @@ public final class Simulation implements Inbox {
         if (sessions.remove(session.id()) == null) {
             return;
         }
+        viewers.remove(session.id());
+        agentClients.remove(session.id());
         List<Agent> owned = agents.values().stream().filter(a -> a.owner == session).toList();
-        owned.forEach(agent -> removeAgent(agent, reason));
+        for (Agent agent : owned) {
+            departed.remove(agent.name);
+            departed.put(agent.name, saved(agent));
+            removeAgent(agent, reason);
+        }
     }
 
     void removeAgent(Agent agent, String reason) {
         agents.remove(agent.name);
+        walking.agentsChanged();
         broadcast(new AgentRemovedMessage(tick, agent.name, reason), Audience.ALL);
         listeners.forEach(l -> l.agentLeft(agent.name, reason));
     }
@@ -293,34 +331,96 @@ public final class Simulation implements Inbox {
 
     private void register(ClientSession session, RegisterMessage register) {
         long seq = register.seq();
+        String name = register.name();
+        Checkpoint.SavedAgent reserved = waiting.get(name);
         if (session.role() != Role.AGENT) {
             send(session, new ErrorMessage(seq, ErrorCode.WRONG_ROLE, "a viewer cannot register agents"));
         } else if (phase == Phase.OVER) {
             send(session, new ErrorMessage(seq, ErrorCode.GAME_NOT_RUNNING, "the game is over"));
-        } else if (agents.containsKey(register.name())) {
-            send(session, new ErrorMessage(seq, ErrorCode.NAME_IN_USE, "an agent named '" + register.name()
+        } else if (agents.containsKey(name)) {
+            send(session, new ErrorMessage(seq, ErrorCode.NAME_IN_USE, "an agent named '" + name
                     + "' is already in the world"));
+        } else if (reserved != null && !tokenMatches(reserved.resumeToken(), register.resumeToken())) {
+            send(session, new ErrorMessage(seq, ErrorCode.NAME_IN_USE, "agent '" + name + "' of the saved game is "
+                    + "waiting for its controller: register it with its resumeToken"));
         } else if (agents.values().stream().filter(a -> a.owner == session).count() >= config.agentsPerSession()) {
             send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "a connection may drive at most "
                     + config.agentsPerSession() + " agents"));
+        } else if (reserved != null) {
+            if (resume(session, seq, reserved)) {
+                waiting.remove(name);
+            }
+            if (waiting.isEmpty() && continueWhenAllBack && phase == Phase.PAUSED) {
+                phase = Phase.RUNNING;
+                continueWhenAllBack = false;
+            }
+        } else if (departed.containsKey(name) && tokenMatches(departed.get(name).resumeToken(), register.resumeToken())) {
+            if (resume(session, seq, departed.get(name))) {
+                departed.remove(name);
+            }
+        } else if (scores.size() >= maxNames && !scores.has(name)) {
+            send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "this game has had " + maxNames
+                    + " different agents, the most it takes"));
         } else {
             var body = config.bodyLimits().cap(register.body());
-            Vec3 place = placeFor(register.name(), body.radius());
+            Vec3 place = placeFor(name, body.radius());
             if (place == null) {
                 send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent"));
                 return;
             }
             double heading = Angles.normalise(random.nextDouble() * 2 * Math.PI - Math.PI);
-            Agent agent = new Agent(register.name(), session, body, register.model(), place, heading);
-            agents.put(agent.name, agent);
-            scores.join(agent.name);
-            send(session, new RegisteredMessage(seq, agent.name, body, place, heading));
-            broadcast(new AgentAddedMessage(tick, agent.state()), Audience.VIEWERS);
-            listeners.forEach(l -> l.agentJoined(agent.name));
+            departed.remove(name);
+            enter(session, seq, new Agent(name, session, body, register.model(), place, heading, newToken()));
             if (phase == Phase.WAITING && agents.size() >= Math.max(1, config.waitFor())) {
                 start();
             }
         }
+    }
+
+    /**
+     * Puts a saved agent back: where it stood if that place is still free, else at a free place.
+     * Returns false, having answered why, when there is no free place left.
+     */
+    private boolean resume(ClientSession session, long seq, Checkpoint.SavedAgent saved) {
+        Vec3 place = saved.position();
+        double radius = saved.body().radius();
+        if (!world.checkPlace(place.onGround(), radius).isFree() || !walking.clearOfAgents(place, radius, null)) {
+            place = placeFor(saved.name(), radius);
+            if (place == null) {
+                send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent"));
+                return false;
+            }
+        }
+        Agent agent = new Agent(saved.name(), session, saved.body(), saved.model(), place, saved.heading(),
+                saved.resumeToken());
+        agent.joints.addAll(saved.joints());
+        agent.timeSensors.addAll(saved.timeSensors());
+        enter(session, seq, agent);
+        return true;
+    }
+
+    private void enter(ClientSession session, long seq, Agent agent) {
+        agent.joined = ++joins;
+        agents.put(agent.name, agent);
+        walking.agentsChanged();
+        scores.join(agent.name);
+        send(session, new RegisteredMessage(seq, agent.name, agent.body, agent.position, agent.heading,
+                agent.resumeToken));
+        broadcast(new AgentAddedMessage(tick, agent.state()), Audience.VIEWERS);
+        listeners.forEach(l -> l.agentJoined(agent.name));
+    }
+
+    /** A new resume token: 128 random bits, in hex. */
+    private String newToken() {
+        byte[] bytes = new byte[16];
+        secrets.nextBytes(bytes);
+        return HexFormat.of().formatHex(bytes);
+    }
+
+    /** Compares in time independent of where the tokens differ, so timing does not reveal a token. */
+    private static boolean tokenMatches(String expected, String offered) {
+        return offered != null && MessageDigest.isEqual(expected.getBytes(java.nio.charset.StandardCharsets.UTF_8),
+                offered.getBytes(java.nio.charset.StandardCharsets.UTF_8));
     }
 
     /** A free place for a body of this radius: the placement's, or drawn from the seeded generator. */
@@ -349,6 +449,7 @@ public final class Simulation implements Inbox {
             send(session, new ActionResultMessage(control.seq(), null, "GameControl", Outcome.REJECTED, refused, null, 0));
             return;
         }
+        continueWhenAllBack = false; // whoever pauses or resumes now decides
         switch (control.command()) {
             case START -> start();
             case PAUSE -> phase = Phase.PAUSED;
@@ -370,6 +471,7 @@ public final class Simulation implements Inbox {
 
     /** Pauses a running game or continues a paused one; returns the phase after. */
     public Phase togglePause() {
+        continueWhenAllBack = false;
         if (phase == Phase.RUNNING) {
             phase = Phase.PAUSED;
         } else if (phase == Phase.PAUSED) {
@@ -409,6 +511,7 @@ public final class Simulation implements Inbox {
         List<Score> ranking = scores.ranking();
         broadcast(new GameOverMessage(tick, reason, ranking), Audience.ALL);
         flushAll();
+        recorder = Recorder.NONE;
         String why = reason;
         listeners.forEach(l -> l.gameOver(why, ranking));
     }
@@ -424,31 +527,119 @@ public final class Simulation implements Inbox {
     }
 
     void send(ClientSession session, ServerMessage message) {
-        recorder.sent(tick, time, Audience.CLIENT, session.id(), message);
+        recorder.sent(tick, time, Audience.CLIENT, session.id(), withoutSecrets(message));
         session.send(message);
+    }
+
+    /** Recordings may be shared: they keep no resume token. */
+    private static io.orchard.protocol.message.Message withoutSecrets(io.orchard.protocol.message.Message message) {
+        if (message instanceof RegisteredMessage r && r.resumeToken() != null) {
+            return new RegisteredMessage(r.seq(), r.agent(), r.body(), r.position(), r.heading(), null);
+        }
+        if (message instanceof RegisterMessage r && r.resumeToken() != null) {
+            return new RegisterMessage(r.seq(), r.name(), r.body(), r.model(), null);
+        }
+        return message;
     }
 
     void broadcast(ServerMessage message, Audience audience) {
         recorder.sent(tick, time, audience, 0, message);
-        EncodedLine line = null;
-        for (ClientSession session : sessions.values()) {
-            boolean wanted = switch (audience) {
-                case ALL -> true;
-                case VIEWERS -> session.role() == Role.VIEWER;
-                case AGENTS -> session.role() == Role.AGENT;
-                case CLIENT -> false;
-            };
-            if (wanted) {
-                if (line == null) {
-                    line = EncodedLine.of(codec, message);
-                }
-                session.send(line);
-            }
+        Map<Long, ClientSession> to = switch (audience) {
+            case ALL -> sessions;
+            case VIEWERS -> viewers;
+            case AGENTS -> agentClients;
+            case CLIENT -> Map.of();
+        };
+        if (to.isEmpty()) {
+            return;
+        }
+        EncodedLine line = EncodedLine.of(CODEC, message);
+        for (ClientSession session : to.values()) {
+            session.send(line);
         }
     }
 
     private void flushAll() {
         sessions.values().forEach(ClientSession::flush);
+        recorder.flush();
+    }
+
+    // ---- checkpoints ---------------------------------------------------------------------------
+
+    /**
+     * Takes a checkpoint at the end of the current tick (at once while no ticks pass) and gives it
+     * to {@code to} on the simulation's thread. Safe from any thread.
+     */
+    public void checkpointAtTickEnd(Consumer<Checkpoint> to) {
+        execute(() -> checkpointRequests.add(to));
+    }
+
+    /**
+     * Gives {@code to} a checkpoint after every tick in which the scores changed and when the game
+     * ends, so that nothing collected is lost to a crash. Call before the simulation's thread starts.
+     */
+    public void checkpointWhenScored(Consumer<Checkpoint> to) {
+        this.onScore = to;
+    }
+
+    private void takeCheckpoints(boolean scored) {
+        boolean forScore = scored && onScore != null;
+        if (checkpointRequests.isEmpty() && !forScore) {
+            return;
+        }
+        Checkpoint checkpoint = checkpoint();
+        if (forScore) {
+            onScore.accept(checkpoint);
+            overSaved = phase == Phase.OVER;
+        }
+        checkpointRequests.forEach(request -> request.accept(checkpoint));
+        checkpointRequests.clear();
+    }
+
+    /** The whole game as it is now. Call on the simulation's thread (or between steps, in a test). */
+    public Checkpoint checkpoint() {
+        List<Checkpoint.SavedAgent> saved = new ArrayList<>(waiting.values());
+        agents.values().forEach(agent -> saved.add(saved(agent)));
+        return new Checkpoint(Checkpoint.FORMAT, seed, config.tickRate(), config.clock(), config.timeLimit(),
+                config.waitFor(), phase.name().toLowerCase(java.util.Locale.ROOT), tick, time, fruitAtStart,
+                random.state(), world.toScenario(), saved, scores.ranking());
+    }
+
+    private static Checkpoint.SavedAgent saved(Agent agent) {
+        return new Checkpoint.SavedAgent(agent.name, agent.body, agent.model, agent.position, agent.heading,
+                List.copyOf(agent.joints), List.copyOf(agent.timeSensors), agent.resumeToken);
+    }
+
+    /**
+     * Continues a saved game: its clock, scores, random generator and phase; its agents wait, out of
+     * the world, until their controllers register them again with their tokens. A running game
+     * comes back paused and continues when every agent is back. Call before the simulation's thread
+     * starts, on a simulation made from the checkpoint's world, seed and settings.
+     */
+    public void restore(Checkpoint checkpoint) {
+        if (checkpoint.seed() != seed) {
+            throw new IllegalArgumentException("the checkpoint is of seed " + checkpoint.seed() + ", this game of "
+                    + seed);
+        }
+        tick = checkpoint.tick();
+        time = checkpoint.time();
+        fruitAtStart = checkpoint.fruitAtStart();
+        random.restore(checkpoint.random());
+        checkpoint.scores().forEach(scores::restore);
+        for (Checkpoint.SavedAgent agent : checkpoint.agents()) {
+            waiting.put(agent.name(), agent);
+        }
+        phase = checkpoint.gamePhase();
+        if (phase == Phase.RUNNING) {
+            phase = waiting.isEmpty() ? Phase.RUNNING : Phase.PAUSED;
+            continueWhenAllBack = true;
+        }
+        overSaved = phase == Phase.OVER;
+    }
+
+    /** Names of the agents of a restored game that are still waiting for their controllers. */
+    public List<String> waitingAgents() {
+        return List.copyOf(waiting.keySet());
     }
 
     WorldSnapshotMessage snapshot() {

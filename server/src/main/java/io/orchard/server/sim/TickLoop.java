@@ -5,21 +5,30 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.locks.LockSupport;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The thread that owns the simulation and drives its clock. In realtime mode a tick lasts its
- * share of a wall-clock second and what arrives late waits for the next; in lockstep mode a tick
- * ends as soon as every client that drives an agent has ended its turn, or when the deadline passes.
- * While no game runs it applies what clients send as it comes.
+ * The thread that owns the simulation and drives its clock. In realtime mode ticks are due on a
+ * fixed wall-clock schedule (20 a second by default) and what arrives late waits for the next; in
+ * lockstep mode a tick ends as soon as every client that drives an agent has ended its turn, or
+ * when the deadline passes. While no game runs it applies what clients send as it comes. It
+ * measures how long each tick works ({@link #stats()}).
  */
 public final class TickLoop implements Runnable {
 
     private static final Logger log = LoggerFactory.getLogger(TickLoop.class);
 
+    /** How far behind its schedule a realtime clock may fall before it gives up catching up. */
+    private static final int MAX_BEHIND_TICKS = 3;
+
     private final Simulation sim;
+    private final TickTimes times = new TickTimes();
     private volatile boolean stopped;
+    /** When the next realtime tick is due (System.nanoTime); reset when ticks start passing again. */
+    private long due;
+    private boolean wasRunning;
 
     public TickLoop(Simulation sim) {
         this.sim = sim;
@@ -30,13 +39,28 @@ public final class TickLoop implements Runnable {
         stopped = true;
     }
 
+    /** How long the ticks took so far. Safe from any thread. */
+    public TickStats stats() {
+        return times.stats();
+    }
+
+    /** Forgets the ticks measured so far. Safe from any thread. */
+    public void resetStats() {
+        times.reset();
+    }
+
     @Override
     public void run() {
         try {
             while (!stopped) {
                 if (sim.phase() == Phase.RUNNING) {
+                    if (!wasRunning) {
+                        due = System.nanoTime();
+                        wasRunning = true;
+                    }
                     tick();
                 } else {
+                    wasRunning = false;
                     idle();
                 }
             }
@@ -62,29 +86,50 @@ public final class TickLoop implements Runnable {
 
     private void tick() throws InterruptedException {
         long tick = sim.tick();
+        long started = System.nanoTime();
+        boolean late = started - due > tickNanos();
         sim.beginTick();
+        long work = System.nanoTime() - started;
         List<Event> events = new ArrayList<>();
         if (sim.lockstep()) {
             collectUntilTurnsEnd(tick, events);
         } else {
-            long end = System.nanoTime() + (long) (sim.config().tickSeconds() * 1e9);
+            // Ticks are due on a fixed schedule, so the rate holds however long each tick worked; a
+            // clock that fell far behind (a long pause, an overload) starts a new schedule instead
+            // of rushing through the ticks it missed.
+            due += tickNanos();
+            long now = System.nanoTime();
+            if (now - due > MAX_BEHIND_TICKS * tickNanos()) {
+                due = now;
+            }
+            // What clients send only counts at the end of the tick: sleep until then, then take it all.
             long left;
-            while (!stopped && (left = end - System.nanoTime()) > 0) {
-                Event event = sim.poll(Math.max(1, left / 1_000_000));
-                if (event != null) {
-                    events.add(event);
+            while (!stopped && (left = due - System.nanoTime()) > 0) {
+                LockSupport.parkNanos(left);
+                if (Thread.interrupted()) {
+                    throw new InterruptedException();
                 }
             }
         }
         sim.drain(events);
+        long ending = System.nanoTime();
         sim.endTick(events);
+        work += System.nanoTime() - ending;
+        times.record(work, late);
+    }
+
+    private long tickNanos() {
+        return (long) (sim.config().tickSeconds() * 1e9);
     }
 
     private void collectUntilTurnsEnd(long tick, List<Event> events) throws InterruptedException {
         long deadline = System.nanoTime() + sim.config().lockstepDeadline().toNanos();
-        Set<Long> ended = new HashSet<>();
+        // Who drives an agent cannot change before the end of the tick (registrations take effect
+        // then), except by leaving.
+        Set<Long> waiting = new HashSet<>(sim.agentSessions());
+        boolean anyone = !waiting.isEmpty();
         while (!stopped) {
-            if (ended.containsAll(sim.agentSessions()) && !sim.agentSessions().isEmpty()) {
+            if (anyone && waiting.isEmpty()) {
                 return;
             }
             long left = deadline - System.nanoTime();
@@ -98,10 +143,10 @@ public final class TickLoop implements Runnable {
             events.add(event);
             if (event instanceof Event.Received received && received.message() instanceof EndTurnMessage end
                     && end.tick() >= tick) {
-                ended.add(received.session().id());
+                waiting.remove(received.session().id());
             } else if (event instanceof Event.Disconnected) {
                 // A client that left has nothing more to say in this tick.
-                ended.add(event.session().id());
+                waiting.remove(event.session().id());
             }
         }
     }

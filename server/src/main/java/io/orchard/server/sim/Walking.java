@@ -6,8 +6,8 @@ import io.orchard.server.sim.Recorder.Audience;
 
 /**
  * Moves walking agents along their paths and keeps them from walking into each other. Agents are
- * found through a uniform grid rebuilt each tick, so the cost grows with the number of agents, not
- * with its square.
+ * found through a uniform grid, built when agents join or leave and kept true as they walk, so the
+ * cost grows with the number of agents, not with its square.
  */
 final class Walking {
 
@@ -18,6 +18,7 @@ final class Walking {
     private static final double CELL = 4.0;
 
     private final Simulation sim;
+    private AgentGrid grid;
 
     Walking(Simulation sim) {
         this.sim = sim;
@@ -27,25 +28,72 @@ final class Walking {
     Contact contact(Agent mover, Vec3 from, Vec3 to) {
         double dx = to.x() - from.x();
         double dz = to.z() - from.z();
-        double length = Math.hypot(dx, dz);
-        Agent first = null;
+        double length = Math.sqrt(dx * dx + dz * dz);
+        if (length == 0) {
+            return null;
+        }
+        // Only agents whose centre lies within reach of the segment's box can be met.
+        double margin = mover.body.radius() + sim.config().bodyLimits().maxRadius();
+        double minX = Math.min(from.x(), to.x()) - margin;
+        double minZ = Math.min(from.z(), to.z()) - margin;
+        double maxX = Math.max(from.x(), to.x()) + margin;
+        double maxZ = Math.max(from.z(), to.z()) + margin;
+        Nearest nearest = new Nearest(mover, from, dx, dz, length);
+        AgentGrid grid = grid();
+        if (grid.cellsIn(minX, minZ, maxX, maxZ) < sim.agents.size()) {
+            grid.forEachInBox(minX, minZ, maxX, maxZ, nearest);
+        } else {
+            sim.agents.values().forEach(nearest);
+        }
+        if (nearest.first == null) {
+            return null;
+        }
+        double travel = Math.max(0, nearest.firstT - 1e-3);
+        return new Contact(nearest.first, new Vec3(from.x() + dx / length * travel, 0, from.z() + dz / length * travel));
+    }
+
+    /** The agent a walker meets first along its segment; ties go to the agent that joined first. */
+    private static final class Nearest implements java.util.function.Consumer<Agent> {
+        private final Agent mover;
+        private final Vec3 from;
+        private final double dx;
+        private final double dz;
+        private final double length;
+        Agent first;
         double firstT = Double.MAX_VALUE;
-        for (Agent other : sim.agents.values()) {
+
+        Nearest(Agent mover, Vec3 from, double dx, double dz, double length) {
+            this.mover = mover;
+            this.from = from;
+            this.dx = dx;
+            this.dz = dz;
+            this.length = length;
+        }
+
+        @Override
+        public void accept(Agent other) {
             if (other == mover) {
-                continue;
+                return;
             }
-            double reach = mover.body.radius() + other.body.radius();
-            double t = entry(from, dx, dz, length, other.position, reach);
-            if (t < firstT) {
+            double t = entry(from, dx, dz, length, other.position, mover.body.radius() + other.body.radius());
+            if (t < firstT || (t == firstT && t != Double.MAX_VALUE && other.joined < first.joined)) {
                 firstT = t;
                 first = other;
             }
         }
-        if (first == null) {
-            return null;
+    }
+
+    /** The agents by where they stand, built when first asked for after the agents changed. */
+    private AgentGrid grid() {
+        if (grid == null) {
+            grid = new AgentGrid(sim.agents.values(), CELL);
         }
-        double travel = Math.max(0, firstT - 1e-3);
-        return new Contact(first, new Vec3(from.x() + dx / length * travel, 0, from.z() + dz / length * travel));
+        return grid;
+    }
+
+    /** Agents joined, left or moved: the grid must be built again before it is used. */
+    void agentsChanged() {
+        grid = null;
     }
 
     /**
@@ -53,15 +101,12 @@ final class Walking {
      * or MAX_VALUE if it never does. A walker already that close counts only if it walks closer.
      */
     private static double entry(Vec3 from, double dx, double dz, double length, Vec3 centre, double reach) {
-        if (length == 0) {
-            return Double.MAX_VALUE;
-        }
         double ux = dx / length;
         double uz = dz / length;
         double cx = centre.x() - from.x();
         double cz = centre.z() - from.z();
         double along = cx * ux + cz * uz;
-        double startGap = Math.hypot(cx, cz);
+        double startGap = Math.sqrt(cx * cx + cz * cz);
         if (startGap < reach) {
             return along > 0 ? 0 : Double.MAX_VALUE;
         }
@@ -86,7 +131,7 @@ final class Walking {
 
     /** Moves every walking agent to where it is at {@code time}; one that would touch another stops. */
     void advance(double time) {
-        AgentGrid grid = new AgentGrid(sim.agents.values(), CELL);
+        AgentGrid grid = grid(); // moved along with the agents below, so it stays true
         for (Agent agent : sim.agents.values()) {
             Motion motion = agent.motion;
             if (motion == null) {

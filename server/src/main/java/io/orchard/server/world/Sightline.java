@@ -23,6 +23,11 @@ final class Sightline {
         this.envelope = castle.polygon().getEnvelopeInternal();
     }
 
+    /** Whether the castle comes within {@code range} of a point (by its bounding box): if not, it hides nothing there. */
+    boolean near(double x, double z, double range) {
+        return envelope.intersects(new Envelope(x - range, x + range, z - range, z + range));
+    }
+
     boolean clear(double ax, double az, double bx, double bz) {
         if (!envelope.intersects(new Envelope(ax, bx, az, bz))) {
             return true;

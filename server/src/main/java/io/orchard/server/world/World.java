@@ -194,6 +194,14 @@ public final class World {
         return sight.clear(from.x(), from.z(), to.x(), to.z());
     }
 
+    /**
+     * Whether the castle may hide anything within {@code range} of a point: false when it lies wholly
+     * farther away, so that a perception need not test its sight lines one by one.
+     */
+    public boolean castleNear(Point2 from, double range) {
+        return sight.near(from.x(), from.z(), range);
+    }
+
     /** Whether the castle hides one ground point from the other: the opposite of {@link #lineOfSight}. */
     public boolean castleHides(Point2 from, Point2 to) {
         return !lineOfSight(from, to);

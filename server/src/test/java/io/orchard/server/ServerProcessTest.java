@@ -1,0 +1,169 @@
+package io.orchard.server;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.client.ProtocolConnection;
+import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.GraspRequestMessage;
+import io.orchard.protocol.message.GraspResultMessage;
+import io.orchard.protocol.message.MoveMessage;
+import io.orchard.protocol.message.RegisterMessage;
+import io.orchard.protocol.message.RegisteredMessage;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.message.SetRotationMessage;
+import io.orchard.protocol.message.WorldSnapshotMessage;
+import io.orchard.protocol.value.Body;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Gripper;
+import io.orchard.protocol.value.Outcome;
+import io.orchard.protocol.value.Role;
+import io.orchard.protocol.value.Rotation;
+import io.orchard.protocol.value.Score;
+import io.orchard.protocol.value.Sight;
+import io.orchard.protocol.value.Vec3;
+import io.orchard.server.sim.Checkpoint;
+import io.orchard.server.sim.CheckpointFile;
+import io.orchard.server.sim.TestWorlds;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import tools.jackson.databind.JsonNode;
+import tools.jackson.databind.json.JsonMapper;
+
+/**
+ * The server as a real process, killed without warning in the middle of a game and started again
+ * from its checkpoint: nothing collected or scored is lost, and the recording it leaves is whole.
+ */
+class ServerProcessTest {
+
+    private static final Body BODY = new Body(0.5, 1.2, 20, new Gripper("hands", 0.6, 0, 1.5), new Sight(40, Math.PI));
+    private static final String TOKEN = "0123456789abcdef0123456789abcdef";
+    private static final Pattern LISTENING = Pattern.compile("listening on port (\\d+)");
+
+    @TempDir
+    Path dir;
+
+    private final List<Process> processes = new ArrayList<>();
+
+    @AfterEach
+    void killAll() {
+        processes.forEach(Process::destroyForcibly);
+    }
+
+    /** Starts {@code ServerMain} in a JVM of its own and returns the port it listens on. */
+    private int startServer(Process[] started, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), ServerMain.class.getName()));
+        command.addAll(List.of(args));
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        processes.add(process);
+        started[0] = process;
+        CompletableFuture<Integer> port = new CompletableFuture<>();
+        Thread output = new Thread(() -> {
+            try (BufferedReader lines = new BufferedReader(new InputStreamReader(process.getInputStream(),
+                    StandardCharsets.UTF_8))) {
+                String line;
+                while ((line = lines.readLine()) != null) {
+                    Matcher matcher = LISTENING.matcher(line);
+                    if (matcher.find()) {
+                        port.complete(Integer.parseInt(matcher.group(1)));
+                    }
+                }
+            } catch (IOException e) {
+                // the process ended
+            }
+            port.completeExceptionally(new AssertionError("the server ended without listening"));
+        }, "server-output");
+        output.setDaemon(true);
+        output.start();
+        return port.get(60, TimeUnit.SECONDS);
+    }
+
+    /** A saved game with Guppy standing just north of tomato F1, facing it, waiting for its controller. */
+    private Path savedGame() throws IOException {
+        Checkpoint.SavedAgent guppy = new Checkpoint.SavedAgent("Guppy", BODY, null, Vec3.ground(0, 4), Math.PI,
+                List.of(), List.of(), TOKEN);
+        Checkpoint start = new Checkpoint(Checkpoint.FORMAT, 11, 50, ClockMode.REALTIME, 600, 0, "running", 10, 0.2,
+                4, 42, TestWorlds.small().toScenario(), List.of(guppy), List.of(new Score("Guppy", 0, 0)));
+        Path file = dir.resolve("start.json");
+        CheckpointFile.write(start, file);
+        return file;
+    }
+
+    private static ServerMessage reply(ProtocolConnection connection,
+                                       java.util.function.LongFunction<? extends io.orchard.protocol.message.ClientMessage> message)
+            throws Exception {
+        return (ServerMessage) connection.request(message).get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void aServerKilledMidGameResumesWithEverythingCollectedAndAWholeRecording() throws Exception {
+        Path checkpoint = dir.resolve("game.json");
+        Path recording = dir.resolve("game.ndjson");
+        Process[] first = new Process[1];
+        int port = startServer(first, "--port", "0", "--resume", savedGame().toString(), "--checkpoint",
+                checkpoint.toString(), "--checkpoint-every", "1", "--record", recording.toString(), "--quiet");
+        try (ProtocolConnection agent = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", m -> { })) {
+            RegisteredMessage back = (RegisteredMessage) reply(agent, seq -> new RegisterMessage(seq, "Guppy", BODY, null,
+                    TOKEN));
+            assertThat(back.position()).isEqualTo(Vec3.ground(0, 4));
+            GraspResultMessage tomato = (GraspResultMessage) reply(agent, seq -> new GraspRequestMessage(seq, "Guppy",
+                    "F1"));
+            assertThat(tomato.success()).as(tomato.reason()).isTrue();
+            reply(agent, seq -> new SetRotationMessage(seq, "Guppy", Rotation.heading(0)));
+            ActionResultMessage walk = (ActionResultMessage) reply(agent, seq -> new MoveMessage(seq, "Guppy",
+                    Vec3.ground(0, 4), Vec3.ground(-20, -19)));
+            assertThat(walk.outcome()).as(walk.reason()).isEqualTo(Outcome.ACCEPTED);
+            Thread.sleep((long) (walk.duration() * 1000) + 300);
+            GraspResultMessage second = (GraspResultMessage) reply(agent, seq -> new GraspRequestMessage(seq, "Guppy",
+                    "F4"));
+            assertThat(second.success()).as(second.reason()).isTrue();
+            // The server saves after every tick that scored; wait for that file, then kill without warning.
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (!Files.exists(checkpoint) || CheckpointFile.read(checkpoint).world().fruit().size() != 2) {
+                assertThat(System.nanoTime()).as("the checkpoint after the second fruit").isLessThan(deadline);
+                Thread.sleep(20);
+            }
+            first[0].destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+        }
+
+        MessageCodec codec = new MessageCodec();
+        JsonMapper json = JsonMapper.builder().build();
+        List<String> lines = Files.readAllLines(recording, StandardCharsets.UTF_8);
+        assertThat(lines).isNotEmpty();
+        for (String line : lines) {
+            JsonNode record = json.readTree(line);
+            codec.decode(record.get("msg").toString());
+        }
+        assertThat(lines).filteredOn(l -> l.contains("\"type\":\"FruitEaten\"")).hasSize(2);
+
+        Process[] again = new Process[1];
+        int resumed = startServer(again, "--port", "0", "--resume", checkpoint.toString(), "--quiet");
+        BlockingQueue<ServerMessage> seen = new LinkedBlockingQueue<>();
+        try (ProtocolConnection viewer = ProtocolConnection.connect("127.0.0.1", resumed, Role.VIEWER, "test", seen::add);
+             ProtocolConnection agent = ProtocolConnection.connect("127.0.0.1", resumed, Role.AGENT, "test", m -> { })) {
+            WorldSnapshotMessage snapshot = (WorldSnapshotMessage) seen.poll(10, TimeUnit.SECONDS);
+            assertThat(snapshot.fruit()).extracting(f -> f.id()).containsExactly("F2", "F5");
+            assertThat(snapshot.scores()).containsExactly(new Score("Guppy", 2, 2));
+            RegisteredMessage back = (RegisteredMessage) reply(agent, seq -> new RegisterMessage(seq, "Guppy", BODY, null,
+                    TOKEN));
+            assertThat(back.position().x()).isCloseTo(-20, org.assertj.core.data.Offset.offset(1e-6));
+            assertThat(back.position().z()).isCloseTo(-19, org.assertj.core.data.Offset.offset(1e-6));
+        }
+    }
+}

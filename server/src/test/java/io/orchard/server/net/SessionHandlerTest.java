@@ -1,0 +1,150 @@
+package io.orchard.server.net;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.netty.channel.embedded.EmbeddedChannel;
+import io.netty.handler.timeout.IdleStateEvent;
+import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.EndTurnMessage;
+import io.orchard.protocol.message.ErrorCode;
+import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Role;
+import io.orchard.server.sim.ClientSession;
+import io.orchard.server.sim.Inbox;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+
+/** The handshake and what follows it, on an embedded channel with an inbox that only listens. */
+class SessionHandlerTest {
+
+    /** An inbox that keeps what the session hands it. */
+    static final class ListeningInbox implements Inbox {
+        final List<ClientSession> connected = new ArrayList<>();
+        final List<ClientMessage> received = new ArrayList<>();
+        final List<String> disconnected = new ArrayList<>();
+
+        @Override
+        public void connected(ClientSession session) {
+            connected.add(session);
+        }
+
+        @Override
+        public void received(ClientSession session, ClientMessage message) {
+            received.add(message);
+        }
+
+        @Override
+        public void disconnected(ClientSession session, String reason) {
+            disconnected.add(reason);
+        }
+
+        @Override
+        public WelcomeMessage welcome(long seq, Role role) {
+            return new WelcomeMessage(seq, 1, "test", role, new Bounds(-1, -1, 1, 1), 20, ClockMode.REALTIME, 0);
+        }
+    }
+
+    private final ListeningInbox inbox = new ListeningInbox();
+
+    private EmbeddedChannel channel(String token) {
+        return new EmbeddedChannel(new SessionHandler(inbox, new AtomicLong(), token, NetLimits.DEFAULT, new TickWrites()));
+    }
+
+    private static HelloMessage hello(int version, String token) {
+        return new HelloMessage(1, version, Role.AGENT, "test", token);
+    }
+
+    @Test
+    void aHelloIsWelcomedAndTheSessionHandedToTheSimulation() {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(1, null));
+        WelcomeMessage welcome = channel.readOutbound();
+        assertThat(welcome.seq()).isEqualTo(1);
+        assertThat(welcome.role()).isEqualTo(Role.AGENT);
+        assertThat(inbox.connected).singleElement().satisfies(s -> assertThat(s.role()).isEqualTo(Role.AGENT));
+        channel.writeInbound(new EndTurnMessage(2, 0));
+        assertThat(inbox.received).containsExactly(new EndTurnMessage(2, 0));
+        channel.close();
+        assertThat(inbox.disconnected).containsExactly("connection closed");
+    }
+
+    @Test
+    void messagesBeforeTheHelloAreRefusedAndTheConnectionStaysOpen() {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(new EndTurnMessage(7, 0));
+        ErrorMessage error = channel.readOutbound();
+        assertThat(error.code()).isEqualTo(ErrorCode.HANDSHAKE_REQUIRED);
+        assertThat(error.seq()).isEqualTo(7);
+        assertThat(error.text()).contains("was EndTurn");
+        assertThat(inbox.received).isEmpty();
+        assertThat(channel.isOpen()).isTrue();
+    }
+
+    @Test
+    void aSecondHelloIsRefused() {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(1, null));
+        channel.readOutbound();
+        channel.writeInbound(hello(1, null));
+        assertThat(((ErrorMessage) channel.readOutbound()).code()).isEqualTo(ErrorCode.INVALID_VALUE);
+        assertThat(inbox.connected).hasSize(1);
+    }
+
+    @Test
+    void anotherProtocolVersionIsRefusedAndClosed() {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(2, null));
+        ErrorMessage error = channel.readOutbound();
+        assertThat(error.code()).isEqualTo(ErrorCode.VERSION_MISMATCH);
+        assertThat(error.text()).contains("client asked for 2");
+        assertThat(channel.isOpen()).isFalse();
+        assertThat(inbox.connected).isEmpty();
+    }
+
+    @Test
+    void anIdleConnectionIsToldWhyAndClosed() {
+        EmbeddedChannel channel = channel(null);
+        channel.pipeline().fireUserEventTriggered(IdleStateEvent.FIRST_READER_IDLE_STATE_EVENT);
+        assertThat(((ErrorMessage) channel.readOutbound()).code()).isEqualTo(ErrorCode.IDLE);
+        assertThat(channel.isOpen()).isFalse();
+    }
+
+    @Nested
+    class WithAToken {
+
+        @Test
+        void theRightTokenIsWelcomed() {
+            EmbeddedChannel channel = channel("s3cret");
+            channel.writeInbound(hello(1, "s3cret"));
+            assertThat((Object) channel.readOutbound()).isInstanceOf(WelcomeMessage.class);
+        }
+
+        @Test
+        void aMissingTokenIsRefusedAndClosed() {
+            EmbeddedChannel channel = channel("s3cret");
+            channel.writeInbound(hello(1, null));
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.UNAUTHORIZED);
+            assertThat(error.text()).contains("requires a token");
+            assertThat(channel.isOpen()).isFalse();
+        }
+
+        @Test
+        void aWrongTokenIsRefusedAndClosedWithoutSayingWhatIsRight() {
+            EmbeddedChannel channel = channel("s3cret");
+            channel.writeInbound(hello(1, "s3cres"));
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.UNAUTHORIZED);
+            assertThat(error.text()).isEqualTo("wrong token");
+            assertThat(channel.isOpen()).isFalse();
+            assertThat(inbox.connected).isEmpty();
+        }
+    }
+}
