@@ -3,7 +3,6 @@ package io.orchard.agents.zoo;
 import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
-import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.MoveStatus;
 import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.goal.Goal;
@@ -89,17 +88,8 @@ public final class Dwarf extends AgentController {
         skills = new Skills(memory(), motor(), random());
         errand = new Errand(skills);
         pose = new Pose(motor());
-        skills.harvester.gesture(new Harvester.Gesture() {
-            @Override
-            public void reach(KnownFruit fruit) {
-                if (fruit.height() < 0.45) {
-                    play(name() + "TSGrasp", 1.5);
-                } else {
-                    double angle = Pose.armAngle(SHOULDER_HEIGHT, ARM_LENGTH, fruit.height());
-                    pose.set("LeftShoulder", angle).set("RightShoulder", angle).set("Neck", 0.3).holdFor(1);
-                }
-            }
-        });
+        skills.harvester.gesture(pose.armsReach(0.45, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
+                ARM_LENGTH, raised -> raised.set("Neck", 0.3)));
     }
 
     @Override

@@ -3,7 +3,6 @@ package io.orchard.agents.zoo;
 import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
-import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.goal.Goal;
 import io.orchard.agents.map.KnownFruit;
@@ -92,17 +91,8 @@ public final class Guppy extends AgentController {
     protected void onRegistered() {
         skills = new Skills(memory(), motor(), random());
         pose = new Pose(motor());
-        skills.harvester.gesture(new Harvester.Gesture() {
-            @Override
-            public void reach(KnownFruit fruit) {
-                if (fruit.height() < 0.6) {
-                    play(name() + "TSGrasp", 1.5);
-                } else {
-                    double angle = Pose.armAngle(SHOULDER_HEIGHT, ARM_LENGTH, fruit.height());
-                    pose.set("LeftShoulder", angle).set("RightShoulder", angle).set("Neck", 0.4).holdFor(1);
-                }
-            }
-        });
+        skills.harvester.gesture(pose.armsReach(0.6, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
+                ARM_LENGTH, raised -> raised.set("Neck", 0.4)));
         stack.push(new Forage());
     }
 

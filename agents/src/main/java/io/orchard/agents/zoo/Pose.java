@@ -1,10 +1,12 @@
 package io.orchard.agents.zoo;
 
+import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.function.Consumer;
 
 /**
  * Joint poses held for a while and then released to neutral, for the gestures of the zoo's agents.
@@ -58,6 +60,26 @@ final class Pose {
         }
         held.clear();
         releaseAt = Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * How an agent with arms reaches for a fruit: one lower than {@code crouchBelow} is taken with
+     * the body's grasp animation (only the animation can crouch), a higher one by raising both
+     * shoulders to the fruit's height for a second. {@code raised} adds what else the agent does
+     * with its arms up.
+     */
+    Harvester.Gesture armsReach(double crouchBelow, Runnable crouch, double shoulderHeight, double armLength,
+                                Consumer<Pose> raised) {
+        return fruit -> {
+            if (fruit.height() < crouchBelow) {
+                crouch.run();
+                return;
+            }
+            double angle = armAngle(shoulderHeight, armLength, fruit.height());
+            set("LeftShoulder", angle).set("RightShoulder", angle);
+            raised.accept(this);
+            holdFor(1);
+        };
     }
 
     /** The shoulder angle that brings a hand hanging {@code armLength} below a shoulder at {@code shoulderHeight} to {@code height}. */

@@ -4,7 +4,6 @@ import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.Explorer;
-import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.goal.Goal;
 import io.orchard.agents.map.Bearings;
@@ -100,18 +99,8 @@ public final class Robot extends AgentController {
     protected void onRegistered() {
         skills = new Skills(memory(), motor(), random());
         pose = new Pose(motor());
-        skills.harvester.gesture(new Harvester.Gesture() {
-            @Override
-            public void reach(KnownFruit fruit) {
-                if (fruit.height() < 0.6) {
-                    play(name() + "TSGrasp", 1.5);
-                } else {
-                    double angle = Pose.armAngle(SHOULDER_HEIGHT, ARM_LENGTH, fruit.height());
-                    pose.set("LeftShoulder", angle).set("RightShoulder", angle).holdFor(1);
-                    claws(false);
-                }
-            }
-        });
+        skills.harvester.gesture(pose.armsReach(0.6, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
+                ARM_LENGTH, raised -> claws(false)));
     }
 
     @Override
