@@ -57,23 +57,25 @@ final class Checkpoints implements AutoCloseable {
     /** Writes the checkpoint to {@code to}, then completes {@code done} (if any) with the file or the failure. */
     void write(Checkpoint checkpoint, Path to, CompletableFuture<Path> done) {
         try {
-            thread.execute(() -> {
-                try {
-                    CheckpointFile.write(checkpoint, to);
-                    log.debug("checkpoint of tick {} written to {}", checkpoint.tick(), to);
-                    if (done != null) {
-                        done.complete(to);
-                    }
-                } catch (IOException | RuntimeException e) {
-                    log.warn("cannot write the checkpoint to {}: {}", to, e.toString());
-                    if (done != null) {
-                        done.completeExceptionally(e);
-                    }
-                }
-            });
+            thread.execute(() -> writeNow(checkpoint, to, done));
         } catch (java.util.concurrent.RejectedExecutionException e) {
             if (done != null) {
                 done.completeExceptionally(new IOException("the server is closing", e));
+            }
+        }
+    }
+
+    private void writeNow(Checkpoint checkpoint, Path to, CompletableFuture<Path> done) {
+        try {
+            CheckpointFile.write(checkpoint, to);
+            log.debug("checkpoint of tick {} written to {}", checkpoint.tick(), to);
+            if (done != null) {
+                done.complete(to);
+            }
+        } catch (IOException | RuntimeException e) {
+            log.warn("cannot write the checkpoint to {}: {}", to, e.toString());
+            if (done != null) {
+                done.completeExceptionally(e);
             }
         }
     }
@@ -99,7 +101,8 @@ final class Checkpoints implements AutoCloseable {
         Checkpoint checkpoint = newest.getAndSet(null);
         if (checkpoint != null) {
             lastOfferWritten = System.nanoTime();
-            write(checkpoint, file, null);
+            // Already on the writer's thread, and perhaps after close() has begun: a new task would be refused.
+            writeNow(checkpoint, file, null);
         }
     }
 
