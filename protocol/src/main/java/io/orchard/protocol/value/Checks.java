@@ -88,7 +88,7 @@ public final class Checks {
     /** An object id such as a fruit's or a tree's: non-blank, printable, at most 64 characters. */
     public static String id(String value, String field) {
         present(value, field);
-        if (value.isBlank() || value.length() > 64 || hasControl(value)) {
+        if (!isPrintableId(value)) {
             throw new IllegalArgumentException(field + " must be 1 to 64 printable characters, was " + quote(value));
         }
         return value;
@@ -118,13 +118,21 @@ public final class Checks {
         return List.copyOf(value);
     }
 
-    private static boolean hasControl(String value) {
-        for (int i = 0; i < value.length(); i++) {
-            if (Character.isISOControl(value.charAt(i))) {
-                return true;
-            }
+    /** Not blank, at most 64 characters, none a control character: in one pass, as it runs for every perceived thing. */
+    private static boolean isPrintableId(String value) {
+        int length = value.length();
+        if (length == 0 || length > 64) {
+            return false;
         }
-        return false;
+        boolean visible = false;
+        for (int i = 0; i < length; i++) {
+            char c = value.charAt(i);
+            if (Character.isISOControl(c)) {
+                return false;
+            }
+            visible |= !Character.isWhitespace(c);
+        }
+        return visible;
     }
 
     static String quote(String value) {

@@ -17,6 +17,7 @@ import io.orchard.protocol.value.Vec3;
 import io.orchard.server.world.Bridge;
 import io.orchard.server.world.NearbyVisitor;
 import io.orchard.server.world.RiverPoint;
+import io.orchard.server.world.SightBox;
 import io.orchard.server.world.World;
 import java.util.ArrayList;
 import java.util.List;
@@ -39,9 +40,12 @@ final class Perceptions {
     /** The three perception messages for {@code agent} at {@code tick}, finding others in {@code crowd}. */
     List<ServerMessage> of(Agent agent, AgentGrid crowd, long tick) {
         View view = new View(agent);
-        world.visitWithin(agent.position.x(), agent.position.z(), agent.body.sight().range(), view);
+        double range = agent.body.sight().range();
+        SightBox box = SightBox.of(agent.position.x(), agent.position.z(), range, agent.heading,
+                agent.body.sight().fieldOfView());
+        world.visitWithin(agent.position.x(), agent.position.z(), range, box, view);
         List<PerceivedAgent> others = new ArrayList<>();
-        crowd.forEachWithin(agent.position, agent.body.sight().range(), other -> {
+        crowd.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), other -> {
             if (other != agent && view.sees(other.position.x(), other.position.z(),
                     agent.position.groundDistance(other.position))) {
                 others.add(new PerceivedAgent(other.name, view.relative(other.position.x(), other.position.z()),
@@ -57,10 +61,12 @@ final class Perceptions {
     private LandmarkPerceptionMessage landmarks(Agent agent, View view, long tick) {
         Point2 here = agent.position.onGround();
         PerceivedRiver river = null;
-        RiverPoint nearest = world.nearestRiverPoint(here);
-        if (view.sees(nearest.point().x(), nearest.point().z(), nearest.distance())) {
-            river = new PerceivedRiver(view.relative(nearest.point().x(), nearest.point().z()),
-                    round3(Angles.normalise(nearest.heading() - agent.heading)));
+        if (!world.riverBeyond(here, agent.body.sight().range())) {
+            RiverPoint nearest = world.nearestRiverPoint(here);
+            if (view.sees(nearest.point().x(), nearest.point().z(), nearest.distance())) {
+                river = new PerceivedRiver(view.relative(nearest.point().x(), nearest.point().z()),
+                        round3(Angles.normalise(nearest.heading() - agent.heading)));
+            }
         }
         List<PerceivedBridge> bridges = new ArrayList<>();
         for (Bridge bridge : world.bridges()) {
@@ -78,6 +84,9 @@ final class Perceptions {
     private final class View implements NearbyVisitor {
 
         private final Agent agent;
+        private final double eyeX;
+        private final double eyeZ;
+        private final double range;
         private final double halfField;
         private final double facingX;
         private final double facingZ;
@@ -88,6 +97,9 @@ final class Perceptions {
 
         View(Agent agent) {
             this.agent = agent;
+            this.eyeX = agent.position.x();
+            this.eyeZ = agent.position.z();
+            this.range = agent.body.sight().range();
             this.halfField = agent.body.sight().fieldOfView() / 2;
             this.facingX = -Math.sin(agent.heading);
             this.facingZ = -Math.cos(agent.heading);
@@ -96,47 +108,40 @@ final class Perceptions {
         }
 
         @Override
-        public void obstacle(Obstacle obstacle, double distance) {
-            Point2 at = obstacle.position();
-            if (sees(at.x(), at.z(), distance)) {
-                objects.add(new PerceivedObject(obstacle.id(), obstacle.kind(), relative(at.x(), at.z()),
+        public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+            if (sees(x, z, distance)) {
+                objects.add(new PerceivedObject(obstacle.id(), obstacle.kind(), relative(x, z),
                         obstacle.radius(), obstacle.height()));
             }
         }
 
         @Override
-        public void fruit(FruitState state, double distance) {
-            Vec3 at = state.position();
-            if (sees(at.x(), at.z(), distance)) {
-                fruit.add(new PerceivedFruit(state.id(), state.kind(), round(at), state.kind().radius(),
+        public void fruit(FruitState state, double x, double z, double distance) {
+            if (sees(x, z, distance)) {
+                fruit.add(new PerceivedFruit(state.id(), state.kind(), round(state.position()), state.kind().radius(),
                         state.support()));
             }
         }
 
-        boolean sees(double x, double z, double distance) {
-            if (distance > agent.body.sight().range()) {
+        boolean sees(double atX, double atZ, double distance) {
+            if (distance > range) {
                 return false;
             }
             // Inside the cone when the angle to the facing direction is at most half the field.
-            double dx = x - agent.position.x();
-            double dz = z - agent.position.z();
+            double dx = atX - eyeX;
+            double dz = atZ - eyeZ;
             if (distance > 1e-9 && halfField < Math.PI && dx * facingX + dz * facingZ < cosHalfField * distance) {
                 return false;
             }
-            return !castleNear || !world.castleHides(agent.position.onGround(), new Point2(x, z));
+            return !castleNear || !world.castleHides(agent.position.onGround(), new Point2(atX, atZ));
         }
 
-        RelativePosition relative(double x, double z) {
-            double dx = x - agent.position.x();
-            double dz = z - agent.position.z();
+        RelativePosition relative(double atX, double atZ) {
+            double dx = atX - eyeX;
+            double dz = atZ - eyeZ;
             double distance = Math.sqrt(dx * dx + dz * dz);
-            return new RelativePosition(round2(distance), distance < 1e-9 ? 0 : round3(bearing(x, z)));
-        }
-
-        private double bearing(double x, double z) {
-            double dx = x - agent.position.x();
-            double dz = z - agent.position.z();
-            return Angles.normalise(Angles.headingOf(dx, dz) - agent.heading);
+            return new RelativePosition(round2(distance), distance < 1e-9 ? 0
+                    : round3(Angles.normalise(Angles.headingOf(dx, dz) - agent.heading)));
         }
     }
 

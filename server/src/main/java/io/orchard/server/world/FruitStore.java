@@ -84,15 +84,15 @@ final class FruitStore {
         return left;
     }
 
-    void visitWithin(double cx, double cz, double range, NearbyVisitor visitor) {
+    void visitWithin(double cx, double cz, double range, SightBox box, NearbyVisitor visitor) {
         double rangeSq = range * range;
-        grid.forEachInBox(cx - range, cz - range, cx + range, cz + range, i -> {
+        grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
             if (present[i]) {
                 double dx = x[i] - cx;
                 double dz = z[i] - cz;
                 double distanceSq = dx * dx + dz * dz;
                 if (distanceSq <= rangeSq) {
-                    visitor.fruit(states[i], Math.sqrt(distanceSq));
+                    visitor.fruit(states[i], x[i], z[i], Math.sqrt(distanceSq));
                 }
             }
         });

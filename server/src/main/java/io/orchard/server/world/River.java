@@ -19,6 +19,7 @@ import org.locationtech.jts.geom.Location;
 import org.locationtech.jts.geom.Polygon;
 import org.locationtech.jts.index.strtree.ItemBoundable;
 import org.locationtech.jts.index.strtree.STRtree;
+import org.locationtech.jts.operation.distance.IndexedFacetDistance;
 
 /**
  * The river: a band of water across the whole world that divides the land into two banks. Agents
@@ -28,11 +29,15 @@ import org.locationtech.jts.index.strtree.STRtree;
  * that lie on the world's edge, where the river leaves the world. Only the shore counts when asking
  * where the nearest water is and which way the river runs.
  *
- * <p>Immutable; the polygon, the shore and the two banks are indexed once.
+ * <p>Immutable; the polygon, the shore and the two banks are indexed once. Whether the river is
+ * beyond an agent's sight is answered from a coarse grid of lower bounds on the distance to the
+ * water, each cell worked out the first time it is asked about: most agents are far from the river,
+ * and the nearest-shore search it saves them was a sixth of a crowded tick.
  */
 public final class River {
 
     private static final double MIN_LAND_AREA = 1e-6;
+    private static final double FAR_CELL = 8;
 
     private final RiverShape shape;
     private final Polygon polygon;
@@ -41,6 +46,13 @@ public final class River {
     private final int shoreSegments;
     private final List<Polygon> land;
     private final Map<Bank, IndexedPointInAreaLocator> banks = new EnumMap<>(Bank.class);
+    private final IndexedFacetDistance outlineDistance;
+    private final double farMinX;
+    private final double farMinZ;
+    private final int farColumns;
+    private final int farRows;
+    /** Per cell, a lower bound of the distance from any of its points to the water; NaN until asked. */
+    private final float[] farBound;
 
     /** @param shape an outline already known to be a valid polygon */
     River(RiverShape shape, Bounds bounds) {
@@ -61,6 +73,13 @@ public final class River {
         if (land.size() == 2) {
             nameBanks(land.get(0), land.get(1));
         }
+        this.outlineDistance = new IndexedFacetDistance(polygon);
+        this.farMinX = bounds.minX();
+        this.farMinZ = bounds.minZ();
+        this.farColumns = Math.max(1, (int) Math.ceil(bounds.width() / FAR_CELL));
+        this.farRows = Math.max(1, (int) Math.ceil(bounds.depth() / FAR_CELL));
+        this.farBound = new float[farColumns * farRows];
+        java.util.Arrays.fill(farBound, Float.NaN);
     }
 
     private static boolean onWorldEdge(Coordinate a, Coordinate b, Bounds bounds) {
@@ -153,6 +172,39 @@ public final class River {
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * Whether every point of the river lies farther than {@code range} from (x, z). Cheap and never
+     * wrong when it says yes; it may say no for a river just beyond the range, and says no outside
+     * the world.
+     */
+    boolean beyond(double x, double z, double range) {
+        int column = (int) Math.floor((x - farMinX) / FAR_CELL);
+        int row = (int) Math.floor((z - farMinZ) / FAR_CELL);
+        if (column < 0 || row < 0 || column >= farColumns || row >= farRows) {
+            return false;
+        }
+        int cell = row * farColumns + column;
+        float bound = farBound[cell];
+        if (Float.isNaN(bound)) {
+            bound = farBound(column, row);
+            // Another thread may work out the same cell at once; both write the same value.
+            farBound[cell] = bound;
+        }
+        return bound > range;
+    }
+
+    private float farBound(int column, int row) {
+        double centreX = farMinX + (column + 0.5) * FAR_CELL;
+        double centreZ = farMinZ + (row + 0.5) * FAR_CELL;
+        if (region.contains(centreX, centreZ)) {
+            return 0;
+        }
+        // Any point of the cell is at most half a diagonal from its centre; a point in the water is
+        // at least as far from the centre as the outline is. The millimetre absorbs float rounding.
+        double outline = outlineDistance.distance(Shapes.FACTORY.createPoint(new Coordinate(centreX, centreZ)));
+        return (float) Math.max(0, outline - FAR_CELL * Math.sqrt(0.5) - 1e-3);
     }
 
     /** The nearest point of the river to (x, z), and its direction there. */

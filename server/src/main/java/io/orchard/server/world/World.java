@@ -215,6 +215,15 @@ public final class World {
         return Sector.of(castle.centre().x() - from.x(), castle.centre().z() - from.z());
     }
 
+    /**
+     * Whether the whole river lies farther than {@code range} from a point, so that
+     * {@link #nearestRiverPoint} need not be asked. A cheap test that may answer no for a river
+     * just out of range.
+     */
+    public boolean riverBeyond(Point2 from, double range) {
+        return river.beyond(from.x(), from.z(), range);
+    }
+
     /** The nearest point of the river to a point, and the direction the river runs there. */
     public RiverPoint nearestRiverPoint(Point2 from) {
         return river.nearest(from.x(), from.z());
@@ -252,20 +261,33 @@ public final class World {
      * nothing per object: built for every agent on every tick.
      */
     public void visitWithin(double x, double z, double range, NearbyVisitor visitor) {
+        visitWithin(x, z, range, SightBox.around(x, z, range), visitor);
+    }
+
+    /**
+     * As {@link #visitWithin(double, double, double, NearbyVisitor)}, but only for what lies in
+     * {@code box} as well: give the {@link SightBox} of an agent's field of view, and the world
+     * visits only the part of the circle the agent faces.
+     */
+    public void visitWithin(double x, double z, double range, SightBox box, NearbyVisitor visitor) {
         Checks.finite(x, "x");
         Checks.finite(z, "z");
         Checks.nonNegative(range, "range");
+        Checks.present(box, "box");
         Checks.present(visitor, "visitor");
         double rangeSq = range * range;
-        obstacles.grid.forEachInBox(x - range, z - range, x + range, z + range, i -> {
-            double dx = obstacles.x[i] - x;
-            double dz = obstacles.z[i] - z;
+        double[] obstacleX = obstacles.x;
+        double[] obstacleZ = obstacles.z;
+        Obstacle[] records = obstacles.records;
+        obstacles.grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
+            double dx = obstacleX[i] - x;
+            double dz = obstacleZ[i] - z;
             double distanceSq = dx * dx + dz * dz;
             if (distanceSq <= rangeSq) {
-                visitor.obstacle(obstacles.records[i], Math.sqrt(distanceSq));
+                visitor.obstacle(records[i], obstacleX[i], obstacleZ[i], Math.sqrt(distanceSq));
             }
         });
-        fruit.visitWithin(x, z, range, visitor);
+        fruit.visitWithin(x, z, range, box, visitor);
     }
 
     /** The trees and tables whose centre lies within {@code range} of a point; a convenience for tests and tools. */
@@ -273,7 +295,7 @@ public final class World {
         List<Obstacle> found = new ArrayList<>();
         visitWithin(centre.x(), centre.z(), range, new NearbyVisitor() {
             @Override
-            public void obstacle(Obstacle obstacle, double distance) {
+            public void obstacle(Obstacle obstacle, double x, double z, double distance) {
                 found.add(obstacle);
             }
         });
@@ -285,7 +307,7 @@ public final class World {
         List<FruitState> found = new ArrayList<>();
         visitWithin(centre.x(), centre.z(), range, new NearbyVisitor() {
             @Override
-            public void fruit(FruitState state, double distance) {
+            public void fruit(FruitState state, double x, double z, double distance) {
                 found.add(state);
             }
         });

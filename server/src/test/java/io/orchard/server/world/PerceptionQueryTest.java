@@ -26,12 +26,12 @@ class PerceptionQueryTest {
 
         world.visitWithin(30, 30, 15, new NearbyVisitor() {
             @Override
-            public void obstacle(Obstacle obstacle, double distance) {
+            public void obstacle(Obstacle obstacle, double x, double z, double distance) {
                 seen.add(obstacle.id() + "@" + distance);
             }
 
             @Override
-            public void fruit(FruitState fruit, double distance) {
+            public void fruit(FruitState fruit, double x, double z, double distance) {
                 seen.add(fruit.id() + "@" + distance);
             }
         });
@@ -69,16 +69,62 @@ class PerceptionQueryTest {
             Set<String> found = new HashSet<>();
             world.visitWithin(x, z, range, new NearbyVisitor() {
                 @Override
-                public void obstacle(Obstacle obstacle, double distance) {
+                public void obstacle(Obstacle obstacle, double x, double z, double distance) {
                     found.add(obstacle.id());
                 }
 
                 @Override
-                public void fruit(FruitState fruit, double distance) {
+                public void fruit(FruitState fruit, double x, double z, double distance) {
                     found.add(fruit.id());
                 }
             });
             assertThat(found).as("around (%s, %s) within %s", x, z, range).isEqualTo(expected);
         }
+    }
+
+    @Test
+    void aSightBoxKeepsEverythingInTheFieldOfView() {
+        World world = WorldGenerator.benchmark(5).generate();
+        SplittableRandom random = new SplittableRandom(11);
+        for (int probe = 0; probe < 300; probe++) {
+            double x = random.nextDouble(-500, 500);
+            double z = random.nextDouble(-500, 500);
+            double range = random.nextDouble(1, 80);
+            double heading = random.nextDouble(-Math.PI, Math.PI);
+            double field = random.nextDouble(0.2, 2 * Math.PI);
+            double facingX = -Math.sin(heading);
+            double facingZ = -Math.cos(heading);
+            Set<String> expected = new HashSet<>();
+            for (Obstacle obstacle : world.obstacles()) {
+                if (inField(obstacle.position().x() - x, obstacle.position().z() - z, range, facingX, facingZ, field)) {
+                    expected.add(obstacle.id());
+                }
+            }
+            for (FruitState fruit : world.fruitStates()) {
+                if (inField(fruit.position().x() - x, fruit.position().z() - z, range, facingX, facingZ, field)) {
+                    expected.add(fruit.id());
+                }
+            }
+            Set<String> found = new HashSet<>();
+            world.visitWithin(x, z, range, SightBox.of(x, z, range, heading, field), new NearbyVisitor() {
+                @Override
+                public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+                    found.add(obstacle.id());
+                }
+
+                @Override
+                public void fruit(FruitState fruit, double x, double z, double distance) {
+                    found.add(fruit.id());
+                }
+            });
+            assertThat(found).as("from (%s, %s) facing %s, field %s, range %s", x, z, heading, field, range)
+                    .containsAll(expected);
+        }
+    }
+
+    private static boolean inField(double dx, double dz, double range, double facingX, double facingZ, double field) {
+        double distance = Math.hypot(dx, dz);
+        return distance <= range && (field >= 2 * Math.PI || distance == 0
+                || (dx * facingX + dz * facingZ) >= Math.cos(field / 2) * distance);
     }
 }
