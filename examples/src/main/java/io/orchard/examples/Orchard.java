@@ -1,6 +1,10 @@
 package io.orchard.examples;
 
+import io.orchard.examples.demo.DemoCommand;
+import io.orchard.examples.embedded.EmbeddedCommand;
+import io.orchard.examples.firstagent.FirstAgentCommand;
 import io.orchard.examples.schema.ProtocolSchemaCommand;
+import io.orchard.examples.tournament.TournamentCommand;
 import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.cli.UsageException;
 import io.orchard.server.Version;
@@ -22,10 +26,14 @@ public final class Orchard {
 
     /** The launcher's commands, in the order its help lists them. A new command is added here. */
     static final List<Command> COMMANDS = List.of(
+            new DemoCommand(),
             new ServerCommand(),
             new ViewerCommand(),
             new AgentCommand(),
             new AgentsCommand(),
+            new FirstAgentCommand(),
+            new TournamentCommand(),
+            new EmbeddedCommand(),
             new ParseCommand(),
             new ProtocolSchemaCommand());
 
