@@ -4,6 +4,7 @@ import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.protocol.value.Point2;
+import io.orchard.protocol.value.RelativePosition;
 import java.util.HashSet;
 import java.util.Set;
 
@@ -24,16 +25,15 @@ public class FirstAgent extends AgentController {
     @Override
     protected void decide(Perception seen) {
         if (lastMove() != null && lastMove().rejected()) {
-            blocked.add(lastMove().to()); // a tree, the castle or the river is in the way
+            blocked.add(lastMove().to()); // a tree, the castle, the river or the edge is in the way
         }
         var fruit = seen.nearestFruit(f -> f.support() == null && !blocked.contains(f.position().onGround()));
-        if (fruit.isEmpty()) {
-            turnTo(seen.heading() + 0.3); // nothing to pick up in view: look around
-        } else if (fruit.get().position().onGround().distance(seen.ground()) < 1) {
+        if (fruit.isPresent() && fruit.get().position().onGround().distance(seen.ground()) < 1) {
             face(fruit.get().position().onGround());
             grasp(fruit.get().id());
-        } else if (!walking()) {
-            walkTo(fruit.get().position().onGround());
+        } else if (!walking()) { // to the fruit, or 10 units ahead, give or take a turn, when none is in view
+            walkTo(fruit.isPresent() ? fruit.get().position().onGround()
+                    : seen.toWorld(new RelativePosition(10, random().nextDouble() * 2 - 1)));
         }
     }
 }

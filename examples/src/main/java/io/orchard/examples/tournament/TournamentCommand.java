@@ -53,7 +53,8 @@ public final class TournamentCommand implements Command {
         double timeLimit = options.number("time-limit", 1, 3600);
         Path dir = options.has("out") ? Folders.given(options.string("out")) : Folders.fresh("tournament");
         Tournament tournament = new Tournament(games, lineup, seedFrom, timeLimit, dir);
-        out.printf(Locale.ROOT, "Tournament: %d games, seeds %d to %d, %s, %.0f s each; results in %s%n", games,
+        out.printf(Locale.ROOT, "Tournament: %d game%s, seeds %d to %d, %s, %.0f s each; results in %s%n", games,
+                games == 1 ? "" : "s",
                 seedFrom, seedFrom + games - 1, String.join(", ", lineup.names()), timeLimit, dir);
         out.flush();
         boolean terminal = System.console() != null && out == System.out;
