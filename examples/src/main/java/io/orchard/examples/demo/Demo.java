@@ -74,23 +74,18 @@ record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfb
                             + VIEWER_END_SECONDS, out)
                     : WindowedViewer.start(server.port(), out, err);
             try (Team team = Team.play(lineup.create(), "127.0.0.1", server.port())) {
-                boolean agentsIn = joined.await(READY_SECONDS, TimeUnit.SECONDS);
-                boolean showing = viewer.awaitShowing(READY_SECONDS, TimeUnit.SECONDS);
-                if (!agentsIn) {
-                    err.println("orchard demo: not every agent joined within " + READY_SECONDS + " s"
-                            + (team.failures().isEmpty() ? "" : ": " + String.join("; ", team.failures())));
-                }
-                if (!showing) {
-                    err.println("orchard demo: the viewer shows nothing after " + READY_SECONDS
-                            + " s; the game starts without it");
-                }
+                awaitReady(joined, team, viewer, err);
                 server.startGame();
                 out.println("The game starts.");
                 out.flush();
                 List<Score> ranking = awaitGameOver(server, viewer);
                 int status = headless ? finishHeadless(viewer, out, err) : 0;
+                if (!team.failures().isEmpty()) {
+                    err.println("orchard demo: agents could not play: " + String.join("; ", team.failures()));
+                    status = 1;
+                }
                 Ranking.print(reason.getNow("stopped"), ranking, out);
-                if (!headless) {
+                if (!headless && viewer.awaitExit(0, TimeUnit.SECONDS) == null) {
                     out.println("Close the viewer's window to quit.");
                     out.flush();
                     viewer.awaitExit(Long.MAX_VALUE, TimeUnit.DAYS);
@@ -99,6 +94,19 @@ record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfb
             } finally {
                 viewer.stop();
             }
+        }
+    }
+
+    /** Waits until every agent is in the world and the viewer shows it, or says what is missing. */
+    private static void awaitReady(CountDownLatch joined, Team team, ViewerRun viewer, PrintStream err)
+            throws InterruptedException {
+        if (!joined.await(READY_SECONDS, TimeUnit.SECONDS)) {
+            err.println("orchard demo: not every agent joined within " + READY_SECONDS + " s"
+                    + (team.failures().isEmpty() ? "" : ": " + String.join("; ", team.failures())));
+        }
+        if (!viewer.awaitShowing(READY_SECONDS, TimeUnit.SECONDS)) {
+            err.println("orchard demo: the viewer shows nothing after " + READY_SECONDS
+                    + " s, or has ended; the game starts without it");
         }
     }
 

@@ -72,7 +72,14 @@ final class HeadlessViewer implements ViewerRun {
 
     @Override
     public boolean awaitShowing(long timeout, TimeUnit unit) throws InterruptedException {
-        return firstShot.await(timeout, unit);
+        long deadline = System.nanoTime() + unit.toNanos(timeout);
+        // A viewer that failed to start says so at once: do not wait the whole time for it.
+        while (process.isAlive() && System.nanoTime() < deadline) {
+            if (firstShot.await(100, TimeUnit.MILLISECONDS)) {
+                return true;
+            }
+        }
+        return firstShot.getCount() == 0;
     }
 
     @Override

@@ -7,6 +7,7 @@ import io.orchard.protocol.cli.UsageException;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.Checks;
 import java.io.IOException;
+import java.net.ConnectException;
 import java.io.PrintStream;
 import java.util.List;
 
@@ -60,6 +61,10 @@ public final class FirstAgentCommand implements Command {
                 Ranking.print(over.reason(), over.ranking(), out);
             }
             return 0;
+        } catch (ConnectException e) {
+            err.println("orchard first-agent: no server at " + host + ":" + port + " (" + e.getMessage()
+                    + "); start one first, for example with ./orchard server");
+            return 1;
         } catch (IOException e) {
             err.println("orchard first-agent: " + e.getMessage());
             return 1;

@@ -1,6 +1,5 @@
 package io.orchard.examples.tournament;
 
-import java.awt.Color;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,20 +12,17 @@ import org.knowm.xchart.style.BoxStyler;
 
 /**
  * The tournament's chart, chart.png: one box per agent of the fruit it collected per game — the
- * box from the first to the third quartile with the median across it, the whiskers out to the
- * furthest games within one and a half box heights, any game beyond them a cross — each labelled
- * with its mean and standard deviation. Drawn with XChart in Java2D; it needs no
- * display, but AWT needs fonts (fontconfig and a font such as DejaVu on Linux).
+ * box from the first to the third quartile with the median across it, the whiskers reaching one
+ * and a half box heights beyond it or to the agent's best and worst game if those are nearer, any
+ * game further out a cross — each labelled with its mean and standard deviation. Drawn with
+ * XChart in Java2D: it needs no display, but AWT needs fonts (fontconfig and a font such as DejaVu
+ * on Linux).
  */
 final class FruitChart {
 
     static final String FILE = "chart.png";
     static final int WIDTH = 960;
     static final int HEIGHT = 540;
-
-    /** Light fills, one per agent, so that the median line and the whiskers stay legible over them. */
-    private static final Color[] FILLS = {new Color(0x9ecae1), new Color(0xfdae6b), new Color(0xa1d99b),
-        new Color(0xfc9fb5), new Color(0xbcbddc), new Color(0xfee391), new Color(0xc7e9c0), new Color(0xd9d9d9)};
 
     private FruitChart() {}
 
@@ -41,12 +37,11 @@ final class FruitChart {
         style.setLegendVisible(false);
         style.setYAxisMin(0.0);
         style.setPlotGridVerticalLinesVisible(false);
-        for (int i = 0; i < summaries.size(); i++) {
-            Summary summary = summaries.get(i);
+        for (Summary summary : summaries) {
             int[] fruit = results.stream().filter(r -> r.agent().equals(summary.agent())).mapToInt(Result::fruit)
                     .toArray();
             chart.addSeries(String.format(Locale.ROOT, "%s %.1f ± %.1f", summary.agent(), summary.meanFruit(),
-                    summary.sdFruit()), fruit).setFillColor(FILLS[i % FILLS.length]);
+                    summary.sdFruit()), fruit);
         }
         Path file = dir.resolve(FILE);
         Files.deleteIfExists(file);

@@ -25,7 +25,8 @@ public final class TournamentCommand implements Command {
             .value("agents", "NAMES", "the agents, separated by commas: Dwarf, Robot, Bunny, Guppy, Roadrunner,"
                     + " FirstAgent", "Dwarf,Robot,Bunny,Guppy,Roadrunner")
             .value("seed-from", "N", "the seed of the first game", "1")
-            .value("time-limit", "SECONDS", "the length of each game in simulated seconds", "120")
+            .value("time-limit", "SECONDS", "the length of each game in simulated seconds; a game ends sooner when all"
+                    + " fruit is collected", "300")
             .value("out", "DIR", "the folder for the results (default: a new folder tournament-<date>-<time>)",
                     null);
 
@@ -54,8 +55,8 @@ public final class TournamentCommand implements Command {
         Path dir = options.has("out") ? Folders.given(options.string("out")) : Folders.fresh("tournament");
         Tournament tournament = new Tournament(games, lineup, seedFrom, timeLimit, dir);
         out.printf(Locale.ROOT, "Tournament: %d game%s, seeds %d to %d, %s, %.0f s each; results in %s%n", games,
-                games == 1 ? "" : "s",
-                seedFrom, seedFrom + games - 1, String.join(", ", lineup.names()), timeLimit, dir);
+                games == 1 ? "" : "s", seedFrom, seedFrom + games - 1, String.join(", ", lineup.names()), timeLimit,
+                dir);
         out.flush();
         boolean terminal = System.console() != null && out == System.out;
         List<Result> results = tournament.play(new ProgressBar(out, terminal, games));

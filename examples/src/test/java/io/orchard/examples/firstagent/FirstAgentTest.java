@@ -6,6 +6,9 @@ import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.WorldServer;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -27,6 +30,23 @@ class FirstAgentTest {
                 assertThat(score.fruit()).isGreaterThanOrEqualTo(1);
             });
         }
+    }
+
+    @Test
+    void theCommandWithoutAServerFailsSayingToStartOne() throws Exception {
+        int port;
+        try (ServerSocket free = new ServerSocket(0)) {
+            port = free.getLocalPort(); // closed again: nothing listens there
+        }
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+        int status = new FirstAgentCommand().run(List.of("--port", String.valueOf(port)),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+
+        assertThat(status).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("no server at localhost:" + port,
+                "./orchard server");
     }
 
     @Test
