@@ -75,6 +75,16 @@ public final class Orchard {
         System.exit(status);
     }
 
+    /**
+     * Runs one command as {@code ./orchard <command> args...} does, then exits with its status: the
+     * {@code main} of each example's command, so that an IDE can run it as it runs any main class.
+     */
+    public static void runAndExit(String command, String[] args) {
+        List<String> all = new ArrayList<>(List.of(command));
+        all.addAll(List.of(args));
+        main(all.toArray(String[]::new));
+    }
+
     /** Runs the launcher on these arguments, printing to these streams, and returns the exit status. */
     static int run(String[] args, PrintStream out, PrintStream err) {
         return new Orchard(COMMANDS).run(List.of(args), out, err);

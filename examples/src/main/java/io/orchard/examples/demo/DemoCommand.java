@@ -1,6 +1,7 @@
 package io.orchard.examples.demo;
 
 import io.orchard.examples.Command;
+import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
 import io.orchard.protocol.cli.Options;
 import io.orchard.protocol.cli.UsageException;
@@ -28,6 +29,11 @@ public final class DemoCommand implements Command {
             .value("time-limit", "SECONDS", "length of the game in simulated (here: wall-clock) seconds", "300")
             .flag("headless", "render off screen and write screenshots, even where there is a display")
             .value("out", "DIR", "folder of the screenshots (default: a new folder demo-<date>-<time>)", null);
+
+    /** Runs {@code ./orchard demo} with these arguments. */
+    public static void main(String[] args) {
+        Orchard.runAndExit("demo", args);
+    }
 
     @Override
     public String name() {

@@ -1,6 +1,7 @@
 package io.orchard.examples.firstagent;
 
 import io.orchard.examples.Command;
+import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Ranking;
 import io.orchard.protocol.cli.Options;
 import io.orchard.protocol.cli.UsageException;
@@ -26,6 +27,11 @@ public final class FirstAgentCommand implements Command {
             .value("port", "N", "the server's port", "7557")
             .value("name", "NAME", "the agent's name in the world", "FirstAgent")
             .value("token", "SECRET", "the token the server requires, if any", null);
+
+    /** Runs {@code ./orchard first-agent} with these arguments. */
+    public static void main(String[] args) {
+        Orchard.runAndExit("first-agent", args);
+    }
 
     @Override
     public String name() {

@@ -1,6 +1,7 @@
 package io.orchard.examples.tournament;
 
 import io.orchard.examples.Command;
+import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
 import io.orchard.examples.match.Lineup;
 import io.orchard.protocol.cli.Options;
@@ -29,6 +30,11 @@ public final class TournamentCommand implements Command {
                     + " fruit is collected", "300")
             .value("out", "DIR", "the folder for the results (default: a new folder tournament-<date>-<time>)",
                     null);
+
+    /** Runs {@code ./orchard tournament} with these arguments. */
+    public static void main(String[] args) {
+        Orchard.runAndExit("tournament", args);
+    }
 
     @Override
     public String name() {
