@@ -16,6 +16,7 @@ dependencies {
     implementation(libs.slf4j.api)
     implementation(libs.logback.classic)
     implementation(libs.jsonschema.generator)
+    implementation(libs.xchart)
 
     testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)

@@ -1,6 +1,10 @@
 package io.orchard.examples;
 
+import io.orchard.examples.demo.DemoCommand;
+import io.orchard.examples.embedded.EmbeddedCommand;
+import io.orchard.examples.firstagent.FirstAgentCommand;
 import io.orchard.examples.schema.ProtocolSchemaCommand;
+import io.orchard.examples.tournament.TournamentCommand;
 import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.cli.UsageException;
 import io.orchard.server.Version;
@@ -22,10 +26,14 @@ public final class Orchard {
 
     /** The launcher's commands, in the order its help lists them. A new command is added here. */
     static final List<Command> COMMANDS = List.of(
+            new DemoCommand(),
             new ServerCommand(),
             new ViewerCommand(),
             new AgentCommand(),
             new AgentsCommand(),
+            new FirstAgentCommand(),
+            new TournamentCommand(),
+            new EmbeddedCommand(),
             new ParseCommand(),
             new ProtocolSchemaCommand());
 
@@ -65,6 +73,16 @@ public final class Orchard {
         int status = run(args, System.out, System.err);
         System.out.flush();
         System.exit(status);
+    }
+
+    /**
+     * Runs one command as {@code ./orchard <command> args...} does, then exits with its status: the
+     * {@code main} of each example's command, so that an IDE can run it as it runs any main class.
+     */
+    public static void runAndExit(String command, String[] args) {
+        List<String> all = new ArrayList<>(List.of(command));
+        all.addAll(List.of(args));
+        main(all.toArray(String[]::new));
     }
 
     /** Runs the launcher on these arguments, printing to these streams, and returns the exit status. */

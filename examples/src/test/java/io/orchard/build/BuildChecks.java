@@ -33,7 +33,8 @@ final class BuildChecks {
             entry("assertj", "assertj.version"),
             entry("jsonschema-generator", "jsonschema-generator.version"),
             entry("jmh", "jmh.version"),
-            entry("jazzer", "jazzer.version"));
+            entry("jazzer", "jazzer.version"),
+            entry("xchart", "xchart.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

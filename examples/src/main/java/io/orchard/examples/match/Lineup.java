@@ -1,0 +1,93 @@
+package io.orchard.examples.match;
+
+import io.orchard.agents.AgentController;
+import io.orchard.agents.zoo.Species;
+import io.orchard.examples.firstagent.FirstAgent;
+import io.orchard.protocol.cli.UsageException;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.function.Supplier;
+
+/**
+ * The agents of a game, by name: the paper's five ({@code Dwarf}, {@code Robot}, {@code Bunny},
+ * {@code Guppy}, {@code Roadrunner}) and the tutorial's {@code FirstAgent}. A line-up makes new
+ * agents for every game, since an agent plays one game.
+ */
+public final class Lineup {
+
+    /** The name of the tutorial's agent in a line-up. */
+    static final String FIRST_AGENT = "FirstAgent";
+
+    private final List<String> names;
+    private final List<Supplier<AgentController>> makers;
+
+    private Lineup(List<String> names, List<Supplier<AgentController>> makers) {
+        this.names = List.copyOf(names);
+        this.makers = List.copyOf(makers);
+    }
+
+    /** The paper's five agents. */
+    public static Lineup zoo() {
+        List<String> names = Arrays.stream(Species.values()).map(Species::agentName).toList();
+        try {
+            return parse(String.join(",", names));
+        } catch (UsageException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /**
+     * The agents named in a comma-separated list, such as {@code Dwarf,Robot,FirstAgent} (any case).
+     *
+     * @throws UsageException naming an unknown or repeated agent, or an empty list
+     */
+    public static Lineup parse(String list) throws UsageException {
+        List<String> names = new ArrayList<>();
+        List<Supplier<AgentController>> makers = new ArrayList<>();
+        Set<String> seen = new LinkedHashSet<>();
+        for (String word : list.split(",", -1)) {
+            String name = word.strip();
+            if (name.isEmpty()) {
+                throw new UsageException("--agents must name agents separated by commas, such as Dwarf,Robot; was '"
+                        + list + "'");
+            }
+            if (!seen.add(name.toLowerCase(Locale.ROOT))) {
+                throw new UsageException("--agents names " + name + " twice; each agent plays once per game");
+            }
+            if (name.equalsIgnoreCase(FIRST_AGENT)) {
+                names.add(FIRST_AGENT);
+                makers.add(() -> new FirstAgent(FIRST_AGENT));
+            } else {
+                Species species = species(name);
+                names.add(species.agentName());
+                makers.add(species::create);
+            }
+        }
+        return new Lineup(names, makers);
+    }
+
+    /** The agents' names, in the order given. */
+    public List<String> names() {
+        return names;
+    }
+
+    /** New agents for one game. */
+    public List<AgentController> create() {
+        return makers.stream().map(Supplier::get).toList();
+    }
+
+    private static Species species(String name) throws UsageException {
+        for (Species species : Species.values()) {
+            if (species.agentName().equalsIgnoreCase(name)) {
+                return species;
+            }
+        }
+        throw new UsageException("--agents: no agent '" + name + "'; expected some of "
+                + String.join(", ", Arrays.stream(Species.values()).map(Species::agentName).toList()) + ", "
+                + FIRST_AGENT);
+    }
+}

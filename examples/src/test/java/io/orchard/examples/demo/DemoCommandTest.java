@@ -1,0 +1,68 @@
+package io.orchard.examples.demo;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import io.orchard.protocol.cli.UsageException;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The demo plays a whole short match headless: the viewer (a child JVM under xvfb-run, as on a
+ * machine without a screen) writes screenshots, and the ranking of the five agents comes last.
+ */
+class DemoCommandTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aShortHeadlessDemoWritesScreenshotsAndEndsWithTheRanking() throws Exception {
+        assumeTrue(DemoCommand.hasDisplay() || HeadlessViewer.xvfbRun() != null,
+                "the headless viewer needs a display or xvfb-run (apt-get install xvfb xauth; .ci/run does this)");
+        Path shots = dir.resolve("shots");
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+
+        int status = new DemoCommand().run(List.of("--headless", "--time-limit", "4", "--seed", "1998", "--out",
+                shots.toString()), out, out);
+
+        String printed = bytes.toString(StandardCharsets.UTF_8);
+        assertThat(status).as(printed).isZero();
+        assertThat(printed).contains("Orchard demo: seed 1998, server on port ", "The game starts.",
+                "Game over (time limit reached). Ranking:");
+        List<String> lines = printed.lines().toList();
+        assertThat(lines.subList(lines.size() - 5, lines.size())).as(printed)
+                .allMatch(line -> line.matches(" +[1-5]\\. (Dwarf|Robot|Bunny|Guppy|Roadrunner) .*"));
+        List<Path> pictures;
+        try (Stream<Path> files = Files.list(shots)) {
+            pictures = files.filter(file -> file.toString().endsWith(".png")).toList();
+        }
+        assertThat(pictures).as(printed).isNotEmpty().contains(shots.resolve("t0000.00.png"));
+        BufferedImage first = ImageIO.read(shots.resolve("t0000.00.png").toFile());
+        assertThat(first.getWidth()).isEqualTo(1280);
+        assertThat(first.getHeight()).isEqualTo(720);
+    }
+
+    @Test
+    void aTimeLimitThatIsNotANumberIsAUsageErrorNamingIt() {
+        assertThatThrownBy(() -> new DemoCommand().run(List.of("--time-limit", "soon"), System.out, System.err))
+                .isInstanceOf(UsageException.class).hasMessage("--time-limit must be a number, was 'soon'");
+    }
+
+    @Test
+    void aSeedThatIsNotAWholeNumberIsAUsageErrorNamingIt() {
+        assertThatThrownBy(() -> new DemoCommand().run(List.of("--seed", "1.5"), System.out, System.err))
+                .isInstanceOf(UsageException.class).hasMessage("--seed must be a whole number, was '1.5'");
+    }
+}

@@ -1,0 +1,58 @@
+package io.orchard.examples.firstagent;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.orchard.protocol.message.GameOverMessage;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Score;
+import io.orchard.server.WorldServer;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The tutorial's agent collects fruit, and stays as short as the tutorial says. */
+class FirstAgentTest {
+
+    @Test
+    void theFirstAgentCollectsFruitInALockstepGame() throws Exception {
+        try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(60)
+                .start()) {
+            GameOverMessage over = new FirstAgent("Pippin").run("127.0.0.1", server.port());
+
+            List<Score> ranking = over.ranking();
+            assertThat(ranking).singleElement().satisfies(score -> {
+                assertThat(score.agent()).isEqualTo("Pippin");
+                assertThat(score.fruit()).isGreaterThanOrEqualTo(1);
+            });
+        }
+    }
+
+    @Test
+    void theCommandWithoutAServerFailsSayingToStartOne() throws Exception {
+        int port;
+        try (ServerSocket free = new ServerSocket(0)) {
+            port = free.getLocalPort(); // closed again: nothing listens there
+        }
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+        int status = new FirstAgentCommand().run(List.of("--port", String.valueOf(port)),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+
+        assertThat(status).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("no server at localhost:" + port,
+                "./orchard server");
+    }
+
+    @Test
+    void theFirstAgentIsUnderFortyLinesIncludingItsImports() throws Exception {
+        Path source = Path.of("src/main/java/io/orchard/examples/firstagent/FirstAgent.java");
+
+        assertThat(Files.readAllLines(source, StandardCharsets.UTF_8)).hasSizeLessThan(40);
+    }
+}

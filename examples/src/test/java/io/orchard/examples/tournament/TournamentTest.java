@@ -1,0 +1,99 @@
+package io.orchard.examples.tournament;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import io.orchard.protocol.cli.UsageException;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** A short tournament of three games writes its rows, its chart and its table. */
+class TournamentTest {
+
+    @TempDir
+    static Path dir;
+    static String printed;
+
+    @BeforeAll
+    static void playThreeShortGames() throws Exception {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        int status = new TournamentCommand().run(List.of("--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
+                "--seed-from", "40", "--time-limit", "15", "--out", dir.toString()), out, out);
+        printed = bytes.toString(StandardCharsets.UTF_8);
+        assertThat(status).as(printed).isZero();
+    }
+
+    @Test
+    void theCsvHasAHeaderAndOneRowPerAgentPerGame() throws Exception {
+        List<String> lines = Files.readAllLines(dir.resolve("results.csv"), StandardCharsets.UTF_8);
+
+        assertThat(lines).hasSize(1 + 3 * 3);
+        assertThat(lines.get(0)).isEqualTo("game,seed,agent,fruit,points");
+        assertThat(lines.get(1)).matches("1,40,Roadrunner,\\d+,\\d+");
+        assertThat(lines.get(6)).matches("2,41,FirstAgent,\\d+,\\d+");
+        assertThat(lines.get(9)).matches("3,42,FirstAgent,\\d+,\\d+");
+    }
+
+    @Test
+    void theJsonHoldsTheSameRows() throws Exception {
+        String json = Files.readString(dir.resolve("results.json"), StandardCharsets.UTF_8);
+
+        assertThat(json.split("\"agent\"", -1)).hasSize(1 + 3 * 3);
+        assertThat(json).startsWith("[").contains("{\"game\": 3, \"seed\": 42, \"agent\": \"Bunny\", \"fruit\": ");
+    }
+
+    @Test
+    void theChartIsAPictureOfTheExpectedSizeWithManyColours() throws Exception {
+        BufferedImage chart = ImageIO.read(dir.resolve("chart.png").toFile());
+
+        assertThat(chart).isNotNull();
+        assertThat(chart.getWidth()).isEqualTo(FruitChart.WIDTH);
+        assertThat(chart.getHeight()).isEqualTo(FruitChart.HEIGHT);
+        Set<Integer> colours = new HashSet<>();
+        int background = chart.getRGB(chart.getWidth() / 2, chart.getHeight() / 2);
+        int drawn = 0;
+        for (int y = 0; y < chart.getHeight(); y++) {
+            for (int x = 0; x < chart.getWidth(); x++) {
+                int rgb = chart.getRGB(x, y);
+                colours.add(rgb);
+                drawn += rgb != background ? 1 : 0;
+            }
+        }
+        assertThat(colours).as("distinct colours: text, axes, boxes").hasSizeGreaterThan(50);
+        assertThat(drawn).as("pixels unlike the plot's background").isGreaterThan(chart.getWidth()
+                * chart.getHeight() / 20);
+    }
+
+    @Test
+    void theTableOfMeansIsPrintedWithEveryAgent() {
+        assertThat(printed).contains("agent          games  fruit mean     sd  min  max  points mean")
+                .containsPattern("Roadrunner +3 +\\d+\\.\\d\\d")
+                .containsPattern("FirstAgent +3 +\\d+\\.\\d\\d")
+                .contains("game 3/3 (seed 42)", "100%");
+    }
+
+    @Test
+    void anUnknownAgentIsAUsageErrorNamingIt() {
+        assertThatThrownBy(() -> new TournamentCommand().run(List.of("--agents", "Dwarf,Gandalf"), System.out,
+                System.err)).isInstanceOf(UsageException.class).hasMessageContaining("no agent 'Gandalf'")
+                .hasMessageContaining("Roadrunner");
+    }
+
+    @Test
+    void aGameCountOutOfRangeIsAUsageErrorNamingIt() {
+        assertThatThrownBy(() -> new TournamentCommand().run(List.of("--games", "0"), System.out, System.err))
+                .isInstanceOf(UsageException.class).hasMessage("--games must be 1 to 1000, was 0");
+    }
+}
