@@ -17,7 +17,7 @@ import java.util.Map;
  * Decides the grasps of a tick. All grasps of a tick are weighed together, so that when two agents
  * reach for the same fruit exactly one gets it, by a rule that does not depend on timing: the agent
  * whose body centre is nearest to the fruit wins; on a tie, the one whose request was applied first
- * (client by client in connection order).
+ * (client by client in the order of their agents' names).
  */
 final class Grasps {
 

@@ -35,6 +35,7 @@ import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HexFormat;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -87,7 +88,8 @@ public final class Simulation implements Inbox {
     final Map<Long, ClientSession> sessions = new TreeMap<>();
     private final Map<Long, ClientSession> viewers = new TreeMap<>();
     private final Map<Long, ClientSession> agentClients = new TreeMap<>();
-    final Map<String, Agent> agents = new LinkedHashMap<>();
+    /** By name, so that every pass over the agents goes in an order that does not depend on timing. */
+    final Map<String, Agent> agents = new TreeMap<>();
     final Scoreboard scores = new Scoreboard();
     private Phase phase = Phase.WAITING;
     private volatile long tick;
@@ -237,8 +239,16 @@ public final class Simulation implements Inbox {
     }
 
     private void apply(List<Event> events) {
-        // Client by client in connection order, each client's events in the order it sent them.
-        events.sort(Comparator.comparingLong(e -> e.session() == null ? -1 : e.session().id()));
+        // Client by client, each client's events in the order it sent them. Clients that control an
+        // agent go in the order of their agents' names, not of their connections, so that a lockstep
+        // game of the same seed plays out the same however the clients' threads raced to connect.
+        Map<Long, String> firstAgent = new HashMap<>();
+        for (Agent agent : agents.values()) {
+            firstAgent.putIfAbsent(agent.owner.id(), agent.name);
+        }
+        events.sort(Comparator.comparing((Event e) -> e.session() == null ? "" : firstAgent.getOrDefault(
+                e.session().id(), ""))
+                .thenComparingLong(e -> e.session() == null ? -1 : e.session().id()));
         for (Event event : events) {
             if (event instanceof Event.Task task) {
                 task.action().run();
@@ -368,7 +378,7 @@ public final class Simulation implements Inbox {
                 send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent"));
                 return;
             }
-            double heading = Angles.normalise(random.nextDouble() * 2 * Math.PI - Math.PI);
+            double heading = Angles.normalise(placing(name).nextDouble() * 2 * Math.PI - Math.PI);
             departed.remove(name);
             enter(session, seq, new Agent(name, session, body, register.model(), place, heading, newToken()));
             if (phase == Phase.WAITING && agents.size() >= Math.max(1, config.waitFor())) {
@@ -423,15 +433,24 @@ public final class Simulation implements Inbox {
                 offered.getBytes(java.nio.charset.StandardCharsets.UTF_8));
     }
 
-    /** A free place for a body of this radius: the placement's, or drawn from the seeded generator. */
+    /**
+     * The draws that place an agent and turn it at first, from the game's seed and the agent's name
+     * alone: an agent starts where it started in any other game of the seed, whichever joined first.
+     */
+    private java.util.random.RandomGenerator placing(String name) {
+        return new java.util.SplittableRandom(seed ^ (name.hashCode() * 0x9E3779B97F4A7C15L) ^ 0x5DEECE66DL);
+    }
+
+    /** A free place for a body of this radius: the placement's, or drawn from the game's seed and the name. */
     private Vec3 placeFor(String name, double radius) {
         Vec3 wanted = placement.placeFor(name, radius);
         if (wanted != null && world.checkPlace(wanted.onGround(), radius).isFree()
                 && walking.clearOfAgents(wanted, radius, null)) {
             return Vec3.ground(wanted.x(), wanted.z());
         }
+        java.util.random.RandomGenerator draws = placing(name);
         for (int attempt = 0; attempt < 500; attempt++) {
-            Vec3 candidate = world.randomFreePoint(random, radius + 0.1);
+            Vec3 candidate = world.randomFreePoint(draws, radius + 0.1);
             if (candidate != null && walking.clearOfAgents(candidate, radius, null)) {
                 return candidate;
             }

@@ -139,7 +139,7 @@ class DisconnectTest {
         sim.applyNow();
         assertThat(viewer.last(AgentAddedMessage.class).agent().name()).isEqualTo("Carrot");
         assertThat(viewer.last(AgentRemovedMessage.class).agent()).isEqualTo("Carrot");
-        assertThat(sim.agentNames()).containsExactly("Guppy", "Bunny");
+        assertThat(sim.agentNames()).containsExactly("Bunny", "Guppy"); // by name
         assertThat(scoreOf("Carrot").points()).isZero();
         FakeSession again = new FakeSession(5, Role.AGENT);
         sim.connected(again);

@@ -1,0 +1,65 @@
+package io.orchard.server.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.RegisterMessage;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Role;
+import io.orchard.server.world.WorldGenerator;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** A game of one seed plays out the same whichever client connected or registered first. */
+class JoinOrderTest {
+
+    private static final List<String> NAMES = List.of("Dwarf", "Robot", "Bunny", "Guppy", "Roadrunner");
+
+    /** Each agent's AgentAdded line, as a viewer sees it, after the agents joined in {@code order}. */
+    private static List<String> join(List<String> order) {
+        Simulation sim = new Simulation(WorldGenerator.standard(1998).generate(), new SimulationConfig(20,
+                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 1998, "test",
+                Recorder.NONE, List.of());
+        FakeSession viewer = new FakeSession(1, Role.VIEWER);
+        sim.connected(viewer);
+        long id = 10;
+        for (String name : order) {
+            FakeSession client = new FakeSession(id++, Role.AGENT);
+            sim.connected(client);
+            sim.received(client, new RegisterMessage(id, name, TestWorlds.BODY, null));
+        }
+        sim.applyNow();
+        List<String> added = new ArrayList<>();
+        for (AgentAddedMessage message : viewer.all(AgentAddedMessage.class)) {
+            added.add(message.agent().name() + " at " + message.agent().position() + " facing " + message.agent().heading());
+        }
+        added.sort(null);
+        return added;
+    }
+
+    @Test
+    void agentsStartWhereTheSeedAndTheirNamesPutThemWhoeverCameFirst() {
+        List<String> reversed = new ArrayList<>(NAMES);
+        java.util.Collections.reverse(reversed);
+
+        assertThat(join(reversed)).hasSize(NAMES.size()).isEqualTo(join(NAMES));
+    }
+
+    @Test
+    void agentsAreListedByName() {
+        Simulation sim = new Simulation(WorldGenerator.standard(7).generate(), new SimulationConfig(20,
+                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 7, "test",
+                Recorder.NONE, List.of());
+        long id = 10;
+        for (String name : NAMES) {
+            FakeSession client = new FakeSession(id++, Role.AGENT);
+            sim.connected(client);
+            sim.received(client, new RegisterMessage(id, name, TestWorlds.BODY, null));
+        }
+        sim.applyNow();
+
+        assertThat(sim.agentNames()).containsExactly("Bunny", "Dwarf", "Guppy", "Roadrunner", "Robot");
+    }
+}
