@@ -1,0 +1,36 @@
+package io.orchard.agents.errand;
+
+import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.Reference;
+
+/**
+ * Looking for something the agent needs and does not know of yet: it says so once ("I don't know
+ * of a coconut on a table yet; I'll look for one.") and explores, until memory has it or there is
+ * nothing left to see.
+ */
+final class Looking {
+
+    private final Kit kit;
+    private final Reference wanted;
+    private boolean said;
+
+    Looking(Kit kit, Reference wanted) {
+        this.kit = kit;
+        this.wanted = wanted;
+    }
+
+    /** One tick of exploring: RUNNING, or FAILED once everything reachable has been seen. */
+    Status step() {
+        if (!said) {
+            said = true;
+            kit.motor.say("I don't know of " + wanted.words() + " yet; I'll look for "
+                    + (wanted.kind() == Reference.Kind.AGENT && wanted.name() != null ? wanted.name() : "one") + ".");
+        }
+        return kit.explorer.step(kit.navigator) == Status.DONE ? Status.FAILED : Status.RUNNING;
+    }
+
+    /** What to say when the search found nothing. */
+    String failure() {
+        return "I have looked everywhere I can reach and found no " + Restated.bare(wanted) + ".";
+    }
+}
