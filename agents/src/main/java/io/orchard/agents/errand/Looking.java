@@ -16,7 +16,9 @@ final class Looking {
 
     Looking(Kit kit, Reference wanted) {
         this.kit = kit;
-        this.wanted = wanted;
+        // "the nearest tree" when none is known is any tree: "I don't know of a tree yet"
+        boolean superlative = wanted.size() == Reference.Size.LARGEST || wanted.size() == Reference.Size.SMALLEST;
+        this.wanted = wanted.withDistance(null).withSize(superlative ? null : wanted.size());
     }
 
     /** One tick of exploring: RUNNING, or FAILED once everything reachable has been seen. */
