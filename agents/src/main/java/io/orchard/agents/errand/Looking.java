@@ -25,10 +25,21 @@ final class Looking {
     Status step() {
         if (!said) {
             said = true;
-            kit.motor.say("I don't know of " + wanted.words() + " yet; I'll look for "
-                    + (wanted.kind() == Reference.Kind.AGENT && wanted.name() != null ? wanted.name() : "one") + ".");
+            kit.motor.say(announcement());
         }
         return kit.explorer.step(kit.navigator) == Status.DONE ? Status.FAILED : Status.RUNNING;
+    }
+
+    /** What the agent says as it sets out to look. */
+    String announcement() {
+        Reference.Kind kind = wanted.kind();
+        if (kind == Reference.Kind.AGENT && wanted.name() != null) {
+            return "I can't see " + wanted.name() + "; I'll look around for it.";
+        }
+        if (kind == Reference.Kind.CASTLE || kind == Reference.Kind.RIVER || kind == Reference.Kind.FOREST) {
+            return "I don't know where " + wanted.words() + " is yet; I'll look for it.";
+        }
+        return "I don't know of " + wanted.words() + " yet; I'll look for one.";
     }
 
     /** What to say when the search found nothing. */

@@ -85,17 +85,18 @@ final class Question {
     /** The thing an answer picks out; empty when it does not pick out exactly one. */
     Optional<Known> read(String answer) {
         String said = " " + answer.toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9 ]", " ").replaceAll("\\s+", " ") + " ";
-        List<Predicate<Integer>> tests = new ArrayList<>();
+        List<Predicate<Integer>> exact = new ArrayList<>();
         for (int i = 0; i < choices.size(); i++) {
             String id = " " + choices.get(i).id().toLowerCase(Locale.ROOT) + " ";
             int index = i;
-            if (said.contains(id)) {
-                tests.add(n -> n == index);
-            }
-            if (said.contains(" " + (i + 1) + " ") || said.contains(" " + ORDINALS[i] + " ")) {
-                tests.add(n -> n == index);
+            if (said.contains(id) || said.contains(" " + (i + 1) + " ") || said.contains(" " + ORDINALS[i] + " ")) {
+                exact.add(n -> n == index);
             }
         }
+        if (!exact.isEmpty()) {
+            return pick(exact); // a number, an ordinal or an id says it all: "the second nearest" is the second
+        }
+        List<Predicate<Integer>> tests = new ArrayList<>();
         if (said.matches(".* (near|nearer|nearest|closer|closest) .*")) {
             tests.add(n -> n == 0);
         }
@@ -119,6 +120,11 @@ final class Question {
                 tests.add(n -> cues.get(n).equals(cue));
             }
         }
+        return pick(tests);
+    }
+
+    /** The one choice every test holds for; empty when there is no test, or none or several fit. */
+    private Optional<Known> pick(List<Predicate<Integer>> tests) {
         if (tests.isEmpty()) {
             return Optional.empty();
         }

@@ -49,7 +49,7 @@ final class Surveying implements Pursuit {
             if (cell == null || kit.memory.coverage().seen(cell)) {
                 Optional<Point2> next = next(inside);
                 if (next.isEmpty()) {
-                    outcome = "I have looked over " + Restated.bare(area) + ".";
+                    outcome = "I have looked over " + area.words() + ".";
                     return Status.DONE;
                 }
                 cell = next.get();

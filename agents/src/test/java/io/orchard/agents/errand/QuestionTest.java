@@ -49,6 +49,21 @@ class QuestionTest {
         assertThat(question.read(answer)).map(Known::id).contains(meant);
     }
 
+    @Test
+    void amongMoreThanTwoTheChoicesAreCountedFromTheNearest() {
+        Views.from(0, 0, 0).tree("T3", -40, 0, 2).into(memory);
+        Reference tree = Reference.to(Reference.Kind.TREE);
+        Question three = new Question(new GoTo(tree), Reference.Kind.TREE,
+                ((Grounding.Ambiguous) grounder.ground(tree)).choices(), memory, grounder);
+
+        assertThat(three.text()).startsWith("Which tree do you mean? 1: the nearest one, 15 m to the east (T2); "
+                + "2: the second nearest, 20 m to the north (T1); 3: the third nearest, 40 m to the west (T3).");
+        assertThat(three.read("the second nearest")).map(Known::id).contains("T1");
+        assertThat(three.read("the nearest one")).map(Known::id).contains("T2");
+        assertThat(three.read("the farthest")).map(Known::id).contains("T3");
+        assertThat(three.read("the west one")).map(Known::id).contains("T3");
+    }
+
     @ParameterizedTest(name = "\"{0}\"")
     @ValueSource(strings = {"banana", "go north-west", "the nearer one on the left", "3", ""})
     void whatPicksOutNoneOrBothIsNoAnswer(String answer) {
