@@ -5,6 +5,8 @@ import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.MoveStatus;
 import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.Stop;
+import io.orchard.agents.language.Wait;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.SeenAgent;
@@ -26,7 +28,7 @@ import java.util.List;
  * it. From the top:
  * <ol>
  *   <li><b>reflex</b>: when another agent is about to bump into it, or the server cut its move
- *       short, it steps aside for a moment;
+ *       short, it steps aside for a moment (unless it was told to stop or wait);
  *   <li><b>obey</b>: while an instruction is pending, the controller's errands carry it out;
  *   <li><b>grab</b>: a fruit within reach of its hands is grasped at once;
  *   <li><b>forage</b>: walks to the nearest known fruit it can reach;
@@ -101,6 +103,9 @@ public final class Dwarf extends AgentController {
     // ---- the layers, from the top --------------------------------------------------------------
 
     private boolean reflex() {
+        if (errands().goal() instanceof Stop || errands().goal() instanceof Wait) {
+            return false; // told to stand still, it stands its ground
+        }
         MoveStatus last = motor().lastMove();
         boolean bumped = last != null && last.blocked() && last != reflexHandled;
         if (bumped) {

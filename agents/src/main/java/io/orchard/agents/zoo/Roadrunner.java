@@ -30,7 +30,8 @@ import java.util.List;
  * an arbiter gives control to the highest score, with a small bonus for the behaviour in control
  * so that it does not dither between near-equal choices. The behaviours:
  * <ul>
- *   <li><b>obey</b>: 1 while an instruction is pending (the controller's errands carry it out);
+ *   <li><b>obey</b>: 2, above all others, while an instruction is pending (the controller's errands
+ *       carry it out);
  *   <li><b>peck</b>: for the best known fruit, more for more points and less the longer the run
  *       there ({@code 0.5 + 0.5 * points / 3 * exp(-seconds / 20)});
  *   <li><b>explore</b>: {@code 0.45} times the square root of the share of the world not yet seen;
@@ -54,7 +55,7 @@ public final class Roadrunner extends AgentController {
     private final Behaviour obey = new Behaviour() {
         @Override
         public double utility() {
-            return instructed() ? 1 : 0;
+            return instructed() ? 2 : 0; // above every other score, hysteresis included: a person asked
         }
 
         @Override
