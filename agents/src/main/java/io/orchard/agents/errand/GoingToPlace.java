@@ -1,6 +1,7 @@
 package io.orchard.agents.errand;
 
 import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.GoTo;
 import io.orchard.agents.language.Place;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Reference.Kind;
@@ -73,7 +74,7 @@ final class GoingToPlace implements Pursuit {
     }
 
     private String where() {
-        String restated = new io.orchard.agents.language.GoTo(area).restatement();
+        String restated = new GoTo(area).restatement();
         // "Going near the castle." -> "near the castle"
         String words = restated.startsWith("Going ") ? restated.substring("Going ".length()) : restated;
         return words.endsWith(".") ? words.substring(0, words.length() - 1) : words;

@@ -260,7 +260,7 @@ final class Grounder {
         return String.format(Locale.ROOT, "%.0f m to the %s", from.distance(thing), compass(from, thing));
     }
 
-    /** Present for callers that need the castle only when its sector has been perceived. */
+    /** The castle's estimated centre, once its sector has been perceived; empty before. */
     Optional<Point2> castle() {
         return memory.castleSector() == null ? Optional.empty() : memory.castle().centre();
     }

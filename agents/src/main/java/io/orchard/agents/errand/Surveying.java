@@ -1,6 +1,7 @@
 package io.orchard.agents.errand;
 
 import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.Place;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.map.Coverage;
 import io.orchard.protocol.value.Nullable;
@@ -84,8 +85,7 @@ final class Surveying implements Pursuit {
             return null;
         }
         if (area.kind() == Reference.Kind.FOREST) {
-            return kit.grounder.where(io.orchard.agents.language.Place.of(
-                    io.orchard.agents.language.Place.Relation.NEAR, area));
+            return kit.grounder.where(Place.of(Place.Relation.NEAR, area));
         }
         Known known = grounding instanceof Grounding.Found found ? found.chosen()
                 : ((Grounding.Ambiguous) grounding).choices().get(0);

@@ -77,7 +77,7 @@ final class Turning implements Pursuit {
             }
         }
         kit.motor.turnTo(heading);
-        outcome = "Done: I'm facing " + Grounder.compass(new Point2(0, 0), facing(heading)) + ".";
+        outcome = "Done: I'm facing " + compass(heading) + ".";
         return Status.DONE;
     }
 
@@ -86,7 +86,9 @@ final class Turning implements Pursuit {
         return outcome;
     }
 
-    private static Point2 facing(double heading) {
-        return Bearings.ahead(new Point2(0, 0), heading, 1);
+    /** The compass direction of a heading, in words: "north-east". */
+    static String compass(double heading) {
+        Point2 origin = new Point2(0, 0);
+        return Grounder.compass(origin, Bearings.ahead(origin, heading, 1));
     }
 }
