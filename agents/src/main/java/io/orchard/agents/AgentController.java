@@ -480,7 +480,11 @@ public abstract class AgentController {
      *         waiting for an answer), and the agent's own behaviour should rest; false in autonomy
      */
     protected final boolean pursueInstruction() {
-        return memory != null && errands().step();
+        boolean held = memory != null && errands().step();
+        if (held && forager != null) {
+            forager.pause();
+        }
+        return held;
     }
 
     /** Whether an instructed goal has the agent: one is pursued, or a question waits for its answer. */

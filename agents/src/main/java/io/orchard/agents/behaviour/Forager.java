@@ -68,6 +68,16 @@ public final class Forager {
     }
 
     /**
+     * Forgets its target and route: something else has the agent (an instruction), and when the
+     * forager gets it back it will stand elsewhere.
+     */
+    public void pause() {
+        target = null;
+        navigator.reset();
+        wanderer.reset();
+    }
+
+    /**
      * Collects the fruit wanted, exploring and then wandering when none is known.
      */
     private void forage(Predicate<KnownFruit> wanted) {

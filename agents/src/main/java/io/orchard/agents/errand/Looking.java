@@ -39,7 +39,11 @@ final class Looking {
         if (kind == Reference.Kind.CASTLE || kind == Reference.Kind.RIVER || kind == Reference.Kind.FOREST) {
             return "I don't know where " + wanted.words() + " is yet; I'll look for it.";
         }
-        return "I don't know of " + wanted.words() + " yet; I'll look for one.";
+        String words = wanted.words();
+        if (wanted.kind() == Reference.Kind.FRUIT && words.startsWith("a fruit")) {
+            words = "any fruit" + words.substring("a fruit".length()); // not "a fruit": fruit is a mass noun
+        }
+        return "I don't know of " + words + " yet; I'll look for one.";
     }
 
     /** What to say when the search found nothing. */
