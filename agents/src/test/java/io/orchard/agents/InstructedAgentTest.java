@@ -20,6 +20,8 @@ import io.orchard.server.sim.GameListener;
 import io.orchard.server.world.Bridge;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
+import java.io.IOException;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -80,7 +82,7 @@ class InstructedAgentTest {
 
     @Test
     void pickUpTheCoconutOnTheTableCollectsACoconutThatWasOnATable() throws Exception {
-        Map<String, FruitState> fruit = new java.util.HashMap<>();
+        Map<String, FruitState> fruit = new HashMap<>();
         Games.fruitOf(SEED).forEach(f -> fruit.put(f.id(), f));
         FruitState onTable = fruit.values().stream()
                 .filter(f -> f.kind() == FruitKind.COCONUT && f.support() != null && f.support().startsWith("D"))
@@ -154,7 +156,7 @@ class InstructedAgentTest {
 
         Games.play(SEED, 8, List.of(pupil), (name, radius) -> null, teacher);
 
-        Map<Long, Point2> at = new java.util.HashMap<>();
+        Map<Long, Point2> at = new HashMap<>();
         for (int i = 0; i < pupil.ticks.size(); i++) {
             at.put(pupil.ticks.get(i), pupil.track.get(i));
         }
@@ -189,7 +191,7 @@ class InstructedAgentTest {
                         meant[0] = m.group(1);
                         try {
                             viewer[0].send(seq -> new InstructionMessage(seq, "Pupil", "the second one", "teacher"));
-                        } catch (java.io.IOException e) {
+                        } catch (IOException e) {
                             throw new IllegalStateException(e);
                         }
                     }
