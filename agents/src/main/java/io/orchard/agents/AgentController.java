@@ -651,7 +651,7 @@ public abstract class AgentController {
                 if (latest != null) {
                     guarded(() -> onInstruction(instruction.text(), instruction.from()));
                 } else {
-                    early.add(instruction); // heard before the agent has seen the world: kept for its first perception
+                    early.add(instruction); // the world not seen yet: kept for the first perception
                 }
                 continue;
             }

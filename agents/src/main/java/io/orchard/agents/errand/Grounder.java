@@ -142,7 +142,8 @@ final class Grounder {
         return switch (relation) {
             case ON, IN -> k -> k.fruit() != null
                     ? k.fruit().support() != null && ids.contains(k.fruit().support())
-                    : anchors.stream().anyMatch(a -> !a.id().equals(k.id()) && a.where().distance(k.where()) <= a.size());
+                    : anchors.stream().anyMatch(a -> !a.id().equals(k.id())
+                            && a.where().distance(k.where()) <= a.size());
             case UNDER -> k -> (k.fruit() == null || k.fruit().onGround())
                     && anchors.stream().anyMatch(a -> !a.id().equals(k.id())
                             && a.where().distance(k.where()) <= a.size() + 0.5);

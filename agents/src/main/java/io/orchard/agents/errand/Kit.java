@@ -54,7 +54,8 @@ final class Kit {
         for (double turn : List.of(0.0, 0.5, -0.5, 1.0, -1.0, 1.6, -1.6, 2.2, -2.2, Math.PI)) {
             Point2 spot = new Point2(centre.x() + distance * Math.cos(towards + turn),
                     centre.z() + distance * Math.sin(towards + turn));
-            if (memory.bounds().contains(spot.x(), spot.z()) && !planner.offLimits(spot) && planner.standable(spot, 0.1)) {
+            if (memory.bounds().contains(spot.x(), spot.z()) && !planner.offLimits(spot)
+                    && planner.standable(spot, 0.1)) {
                 return Optional.of(spot);
             }
         }

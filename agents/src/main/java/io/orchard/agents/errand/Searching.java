@@ -25,7 +25,8 @@ final class Searching implements Pursuit {
         for (Known known : fits) {
             if (known.fruit() == null || known.fruit().seenTick() >= kit.memory.tick()) {
                 kit.standStill();
-                outcome = "I see " + Restated.thing(known) + ", " + Grounder.bearingWords(kit.here(), known.where()) + ".";
+                outcome = "I see " + Restated.thing(known) + ", "
+                        + Grounder.bearingWords(kit.here(), known.where()) + ".";
                 return Status.DONE;
             }
         }

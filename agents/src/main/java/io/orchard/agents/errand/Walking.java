@@ -41,7 +41,8 @@ final class Walking implements Pursuit {
 
     /** Walks a few steps in the direction of {@code heading}; backwards keeps facing the way it faces. */
     static Walking steps(Kit kit, double heading, boolean backwards) {
-        return new Walking(kit, Bearings.ahead(kit.here(), heading, FEW_STEPS), Double.NaN, backwards, "Done: I moved.");
+        Point2 end = Bearings.ahead(kit.here(), heading, FEW_STEPS);
+        return new Walking(kit, end, Double.NaN, backwards, "Done: I moved.");
     }
 
     /** Walks on in the direction of {@code heading} as far as it can. */

@@ -132,7 +132,8 @@ class GrounderTest {
             Grounding grounding = ground("go to the tree");
 
             assertThat(grounding).isInstanceOf(Grounding.Ambiguous.class);
-            assertThat(((Grounding.Ambiguous) grounding).choices()).extracting(Known::id).containsExactly("T2", "T1", "T3");
+            assertThat(((Grounding.Ambiguous) grounding).choices()).extracting(Known::id)
+                    .containsExactly("T2", "T1", "T3");
         }
 
         @Test
