@@ -21,6 +21,7 @@ import io.orchard.server.world.Bridge;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
 import java.io.IOException;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -55,7 +56,7 @@ class InstructedAgentTest {
         @Override
         protected AgentBody body() {
             return AgentBody.builder().radius(0.4).speed(8).gripper("hands", 0.7, 0, 2)
-                    .sight(35, Math.toRadians(300)).build();
+                    .sight(35, 2 * Math.PI).build();
         }
 
         @Override
@@ -99,7 +100,17 @@ class InstructedAgentTest {
         };
         pupil.instruct("pick up the coconut on the table");
 
-        Point2 start = freeNear(new Point2(onTable.position().x() - 6, onTable.position().z() - 8));
+        // start nearer a coconut on the ground, so that only the words "on the table" send it to the table
+        Point2 table = onTable.position().onGround();
+        FruitState onGround = fruit.values().stream()
+                .filter(f -> f.kind() == FruitKind.COCONUT && f.support() == null)
+                .min(Comparator.comparingDouble(f -> f.position().onGround().distance(table))).orElseThrow();
+        Point2 ground = onGround.position().onGround();
+        double apart = ground.distance(table);
+        Point2 start = freeNear(new Point2(ground.x() + (table.x() - ground.x()) / apart * 6,
+                ground.z() + (table.z() - ground.z()) / apart * 6));
+        assertThat(start.distance(ground)).as("precondition: the coconut on the ground is nearer")
+                .isLessThan(start.distance(table) - 10);
         Games.play(SEED, 40, List.of(pupil), Games.at(Map.of("Pupil", start.at(0))), listener);
 
         assertThat(pupil.said.get(0)).isEqualTo("Going to pick up a coconut that lies on a table.");
