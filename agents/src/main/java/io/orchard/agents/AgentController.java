@@ -4,10 +4,10 @@ import io.orchard.agents.behaviour.Forager;
 import io.orchard.agents.behaviour.GraspStatus;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.MoveStatus;
-import io.orchard.agents.goal.Goal;
-import io.orchard.agents.goal.Interpreter;
-import io.orchard.agents.goal.NotUnderstoodException;
-import io.orchard.agents.goal.StructuredGoals;
+import io.orchard.agents.errand.Errands;
+import io.orchard.agents.language.Goal;
+import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.Interpretation;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.Obstruction;
 import io.orchard.agents.map.WorldMemory;
@@ -78,7 +78,18 @@ import org.slf4j.LoggerFactory;
  * happens through small hooks; the agent acts through small methods named after the paper's
  * messages. Override {@link #body()} and, for behaviour of your own, {@link #decide(Perception)}:
  * everything else has a default, and the default {@code decide} already explores and collects
- * fruit, taking instructions such as "go to 10,-20" or "collect banana".
+ * fruit, and follows instructions in English such as "pick up the coconut on the table", "cross
+ * the bridge" or "Guppy, stop".
+ *
+ * <h2>Instructions</h2>
+ * A line typed on the agent's console ({@link #instruct}) or an {@code Instruction} relayed by the
+ * server goes to {@link #onInstruction}: the default reads it with {@link #interpreter()} into a
+ * {@link Goal}, ignores it when it was addressed to another agent by name, answers what it does
+ * not understand with {@link #say}, and hands the goal to {@link #onGoal}. The default
+ * {@code onGoal} gives it to the agent's {@link Errands}, which ground it in the memory, answer
+ * with one line, ask which one is meant when the words fit several landmarks, and pursue it; an
+ * agent's {@code decide} calls {@link #pursueInstruction()} first and does its own thing only when
+ * that returns false. Override {@code onGoal} to handle goals yourself.
  *
  * <h2>The lifecycle</h2>
  * {@link #run(String, int)} does everything and returns when the game is over:
@@ -147,6 +158,8 @@ public abstract class AgentController {
     private GraspStatus lastGrasp;
     private long lastGraspSeq = -1;
     private Forager forager;
+    private Errands errands;
+    private InstructionInterpreter interpreter;
     private GameOverMessage gameOver;
 
     /** The console line or relayed instruction, queued for the controller's thread. */
@@ -225,7 +238,8 @@ public abstract class AgentController {
 
     /**
      * Hands the agent an instruction as if a person had sent it ({@link #onInstruction} with
-     * {@code from} "console"). Safe from any thread.
+     * {@code from} "console"). Instructions given before the agent's first perception are kept
+     * until then, so that they are grounded in what it sees. Safe from any thread.
      */
     public final void instruct(String text) {
         inbox.add(new Instruction(Checks.text(text, "instruction"), "console"));
@@ -273,10 +287,13 @@ public abstract class AgentController {
     /**
      * Decides this tick's actions from this tick's perception. Called once for each tick that has
      * a perception (every tick by default). The default pursues an instructed goal if there is
-     * one, and otherwise explores and collects fruit ({@link #forager()}).
+     * one ({@link #pursueInstruction()}), and otherwise explores and collects fruit
+     * ({@link #forager()}).
      */
     protected void decide(Perception perception) {
-        forager().step();
+        if (!pursueInstruction()) {
+            forager().step();
+        }
     }
 
     /** The agent is registered: its body in force is {@link #bodyInForce()}, its place {@link #position()}. */
@@ -304,21 +321,41 @@ public abstract class AgentController {
 
     /**
      * A person instructs the agent (a line typed on its console, or an {@code Instruction}
-     * relayed by the server). The default reads it with {@link #interpreter()}: a goal goes to
-     * {@link #onGoal}; what is not understood is answered with {@link #say}.
+     * relayed by the server). The default reads it with {@link #interpreter()}:
+     * <ul>
+     *   <li>addressed to another agent by name ("Guppy, stop" heard by the Robot): answered with
+     *       who it was for, and not acted on;
+     *   <li>understood: the goal goes to {@link #onGoal};
+     *   <li>not understood, while the agent waits for the answer to a question it asked: read as
+     *       the answer ("the nearer one") if it is one;
+     *   <li>otherwise not understood: the interpreter's helpful answer is said.
+     * </ul>
      */
     protected void onInstruction(String text, @Nullable String from) {
-        try {
-            onGoal(interpreter().interpret(text, memory()));
-        } catch (NotUnderstoodException e) {
-            say("I do not understand: " + e.getMessage());
+        Interpretation heard = interpreter().interpret(text);
+        if (!heard.isFor(name)) {
+            say("That was for " + heard.addressee().orElseThrow() + ", not for me.");
+            return;
+        }
+        if (heard instanceof Interpretation.Understood understood) {
+            onGoal(understood.goal());
+        } else if (heard instanceof Interpretation.NotUnderstood notUnderstood) {
+            if (!errands().answer(text)) {
+                say(errands().asking() ? notUnderstood.answer() + " " + errands().question()
+                        : notUnderstood.answer());
+            }
         }
     }
 
-    /** An instructed goal. The default hands it to the {@link #forager()} and says so. */
+    /**
+     * An instructed goal. The default hands it to the agent's {@link #errands()}, which answer the
+     * person and pursue it in the ticks that follow ({@link #pursueInstruction()}). Override it to
+     * pursue goals your own way: dispatch with {@code instanceof} on the goal's records
+     * ({@link io.orchard.agents.language.Collect}, {@link io.orchard.agents.language.GoTo}, ...),
+     * and answer with {@link #say}, as a person expects an answer.
+     */
     protected void onGoal(Goal goal) {
-        forager().instruct(goal);
-        say(goal instanceof Goal.CarryOn ? "Carrying on." : "OK: " + goal.describe() + ".");
+        errands().take(goal);
     }
 
     /** Another agent said something. */
@@ -327,9 +364,15 @@ public abstract class AgentController {
     /** The game is over. */
     protected void onGameOver(GameOverMessage over) {}
 
-    /** Reads instructions into goals; the default knows the forms of {@link StructuredGoals}. */
-    protected Interpreter interpreter() {
-        return new StructuredGoals();
+    /**
+     * Reads instructions into goals: the default understands simple English, as
+     * docs/instructions.md describes, knowing this agent's name. Made once, on first use.
+     */
+    protected InstructionInterpreter interpreter() {
+        if (interpreter == null) {
+            interpreter = new InstructionInterpreter(List.of(name));
+        }
+        return interpreter;
     }
 
     // ---- what the agent knows ----------------------------------------------------------------
@@ -412,6 +455,41 @@ public abstract class AgentController {
             }
         }
         return forager;
+    }
+
+    /**
+     * The agent's instructed goals: the {@link Errands} that ground, answer and pursue them. Made
+     * on first use, once the agent is in the world; its harvester plays the body's grasp
+     * animation with each grasp.
+     */
+    protected final Errands errands() {
+        if (errands == null) {
+            errands = new Errands(memory, motor);
+            String graspAnimation = plan.graspAnimation();
+            if (graspAnimation != null) {
+                errands.harvester().gesture(fruit -> play(graspAnimation, GRASP_SECONDS));
+            }
+        }
+        return errands;
+    }
+
+    /**
+     * One tick of the instructed goal, if there is one: call it first in {@link #decide}.
+     *
+     * @return true when an instructed goal has the agent this tick (it acted, or stands still
+     *         waiting for an answer), and the agent's own behaviour should rest; false in autonomy
+     */
+    protected final boolean pursueInstruction() {
+        boolean held = memory != null && errands().step();
+        if (held && forager != null) {
+            forager.pause();
+        }
+        return held;
+    }
+
+    /** Whether an instructed goal has the agent: one is pursued, or a question waits for its answer. */
+    protected final boolean instructed() {
+        return errands != null && errands.busy();
     }
 
     // ---- what the agent does: the paper's actions --------------------------------------------
@@ -570,10 +648,10 @@ public abstract class AgentController {
                         + (closed.cause() == null ? "" : ": " + closed.cause().getMessage()), closed.cause());
             }
             if (event instanceof Instruction instruction) {
-                if (memory != null) {
+                if (latest != null) {
                     guarded(() -> onInstruction(instruction.text(), instruction.from()));
                 } else {
-                    early.add(instruction); // heard before the agent is in the world: kept for then
+                    early.add(instruction); // the world not seen yet: kept for the first perception
                 }
                 continue;
             }
@@ -620,7 +698,11 @@ public abstract class AgentController {
             }
         } else if (message instanceof InstructionMessage instruction) {
             if (instruction.agent().equals(name)) {
-                guarded(() -> onInstruction(instruction.text(), instruction.from()));
+                if (latest != null) {
+                    guarded(() -> onInstruction(instruction.text(), instruction.from()));
+                } else {
+                    early.add(new Instruction(instruction.text(), instruction.from()));
+                }
             }
         } else if (message instanceof SayMessage say) {
             if (say.agent().equals(name)) {
@@ -663,10 +745,6 @@ public abstract class AgentController {
         }
         requestPerception(plan.perceptionEvery());
         guarded(this::onRegistered);
-        for (Instruction instruction : early) {
-            guarded(() -> onInstruction(instruction.text(), instruction.from()));
-        }
-        early.clear();
     }
 
     private void tick(TickMessage t) {
@@ -710,6 +788,10 @@ public abstract class AgentController {
         position = perception.ground();
         heading = perception.heading();
         latest = perception;
+        for (Instruction instruction : early) {
+            guarded(() -> onInstruction(instruction.text(), instruction.from()));
+        }
+        early.clear();
         if (turnOpen && seen.tick() == tick) {
             turn(perception);
         }

@@ -7,9 +7,12 @@
  *
  * <h2>A new agent</h2>
  * Override {@code body()} and nothing else, and the agent explores and collects fruit on its own
- * and takes instructions (the default {@code decide} is a {@link io.orchard.agents.behaviour.Forager}).
- * To give it behaviour of your own, override {@code decide} too. This one walks about until it
- * sees a fruit its hands reach, walks up to it, faces it and grasps it:
+ * (the default {@code decide} is a {@link io.orchard.agents.behaviour.Forager}) and follows
+ * instructions in English ("pick up the coconut on the table", "cross the bridge", "stop"), which
+ * its {@link io.orchard.agents.errand.Errands} ground, answer and pursue. To give it behaviour of
+ * your own, override {@code decide} too, and call {@code pursueInstruction()} first so that it
+ * stays instructable. This one walks about until it sees a fruit its hands reach, walks up to it,
+ * faces it and grasps it:
  *
  * <pre>{@code
  * public final class Pippin extends AgentController {
@@ -25,6 +28,9 @@
  *
  *     @Override
  *     protected void decide(Perception seen) {
+ *         if (pursueInstruction()) {               // told what to do: that comes first
+ *             return;
+ *         }
  *         Point2 here = seen.ground();
  *         Gripper hands = bodyInForce().gripper();
  *         Optional<PerceivedFruit> fruit = seen.nearestFruit(f -> f.position().y() < hands.maxHeight() - 0.01);

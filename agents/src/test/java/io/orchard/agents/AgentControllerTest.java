@@ -3,20 +3,18 @@ package io.orchard.agents;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import io.orchard.agents.goal.StructuredGoals;
+import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.Interpretation;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Role;
-import io.orchard.protocol.value.Point2;
 import io.orchard.server.WorldServer;
 import io.orchard.server.sim.GameListener;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
-import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
@@ -154,12 +152,11 @@ class AgentControllerTest {
         Recorder agent = new Recorder("Obedient");
         List<String> said = new CopyOnWriteArrayList<>();
         agent.addSpeechListener(said::add);
-        Point2[] walk = Games.freeWalk(1998, 9);
-        String target = String.format(Locale.ROOT, "(%.1f, %.1f)", walk[1].x(), walk[1].z());
         agent.instruct("dance");
-        agent.instruct(String.format(Locale.ROOT, "go to %.1f,%.1f", walk[1].x(), walk[1].z()));
+        agent.instruct("turn around");
+        agent.instruct("Guppy, stop");
         try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(40)
-                .placement(Games.at(Map.of("Obedient", walk[0].at(0)))).start()) {
+                .start()) {
             CompletableFuture<GameOverMessage> playing = CompletableFuture.supplyAsync(() -> {
                 try {
                     return agent.run("127.0.0.1", server.port());
@@ -167,7 +164,7 @@ class AgentControllerTest {
                     throw new IllegalStateException(e);
                 }
             });
-            while (said.stream().noneMatch(s -> s.startsWith("I am there"))) {
+            while (said.stream().noneMatch(s -> s.startsWith("Done: I'm facing"))) {
                 Thread.sleep(10);
                 assertThat(playing).isNotDone();
             }
@@ -178,10 +175,13 @@ class AgentControllerTest {
             }
         }
 
+        Interpretation dance = new InstructionInterpreter().interpret("dance");
+        assertThat(dance).isInstanceOf(Interpretation.NotUnderstood.class);
         assertThat(said).startsWith(
-                "I do not understand: 'dance' is not an instruction I know; " + StructuredGoals.USAGE,
-                "OK: go to " + target + ".",
-                "I am there: " + target + ".",
-                "OK: collect a coconut.");
+                ((Interpretation.NotUnderstood) dance).answer(),
+                "Turning around.",
+                "That was for Guppy, not for me.");
+        assertThat(said.get(3)).startsWith("Done: I'm facing").endsWith("Carrying on by myself.");
+        assertThat(said.get(4)).isEqualTo("Going to pick up a coconut.");
     }
 }

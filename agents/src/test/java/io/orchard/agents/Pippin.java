@@ -20,6 +20,9 @@ public final class Pippin extends AgentController {
 
     @Override
     protected void decide(Perception seen) {
+        if (pursueInstruction()) {               // told what to do: that comes first
+            return;
+        }
         Point2 here = seen.ground();
         Gripper hands = bodyInForce().gripper();
         Optional<PerceivedFruit> fruit = seen.nearestFruit(f -> f.position().y() < hands.maxHeight() - 0.01);

@@ -1,6 +1,5 @@
 package io.orchard.agents.behaviour;
 
-import io.orchard.agents.goal.Goal;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Nullable;
@@ -13,9 +12,9 @@ import java.util.random.RandomGenerator;
 /**
  * The default autonomy of an agent, put together from the other behaviours: collect the known
  * fruit that is cheapest to reach (by planned path, bigger fruit counting for more), explore when
- * none is known, wander when everything has been seen. It takes instructed goals
- * ({@link #instruct(Goal)}), pursues them first, says when they are done, and returns to its
- * autonomy.
+ * none is known, wander when everything has been seen. Instructed goals are not its business:
+ * the controller's {@link io.orchard.agents.errand.Errands} pursue them, and the forager rests
+ * meanwhile.
  */
 public final class Forager {
 
@@ -29,7 +28,6 @@ public final class Forager {
     private final Harvester harvester;
     private final Explorer explorer;
     private final Wanderer wanderer;
-    private Goal goal;
     private KnownFruit target;
     private double chosenAt = Double.NEGATIVE_INFINITY;
 
@@ -59,66 +57,30 @@ public final class Forager {
         return harvester;
     }
 
-    /** The instructed goal being pursued; null in autonomy. */
-    public @Nullable Goal goal() {
-        return goal;
-    }
-
     /** The fruit it is after; null when none. */
     public @Nullable KnownFruit target() {
         return target;
     }
 
-    /** Takes an instructed goal: {@link Goal.CarryOn} drops the current one, the others replace it. */
-    public void instruct(Goal instructed) {
-        goal = instructed instanceof Goal.CarryOn ? null : instructed;
+    /** One tick of autonomy. */
+    public void step() {
+        forage(fruit -> true);
+    }
+
+    /**
+     * Forgets its target and route: something else has the agent (an instruction), and when the
+     * forager gets it back it will stand elsewhere.
+     */
+    public void pause() {
         target = null;
         navigator.reset();
         wanderer.reset();
     }
 
-    /** One tick: the instructed goal if there is one, else autonomy. */
-    public void step() {
-        if (goal instanceof Goal.Stop) {
-            if (motor.walking()) {
-                motor.halt();
-            }
-        } else if (goal instanceof Goal.GoTo go) {
-            Status status = navigator.goTo(go.target(), 0.5);
-            if (status != Status.RUNNING) {
-                finish(status == Status.DONE ? "I am there: " + go.describe().substring(6) + "."
-                        : "I cannot find a way to " + go.describe().substring(6) + ".");
-            }
-        } else if (goal instanceof Goal.Collect collect) {
-            Predicate<KnownFruit> wanted = fruit -> (collect.kind() == null || fruit.kind() == collect.kind())
-                    && (collect.fruitId() == null || fruit.id().equals(collect.fruitId()));
-            Status status = forage(wanted);
-            if (status == Status.DONE) {
-                finish("Done: " + collect.describe() + ".");
-            } else if (status == Status.FAILED) {
-                finish("I know of no fruit like that I can reach (" + collect.describe() + ").");
-            }
-        } else if (goal instanceof Goal.Explore) {
-            if (explorer.step(navigator) == Status.DONE) {
-                finish("I have seen everything I can reach.");
-            }
-        } else {
-            forage(fruit -> true);
-        }
-    }
-
-    private void finish(String answer) {
-        motor.say(answer);
-        goal = null;
-        target = null;
-        navigator.reset();
-    }
-
     /**
-     * Collects the fruit wanted, exploring and then wandering when none is known. DONE when one was
-     * collected, FAILED when none is known and nothing is left to explore (autonomy then wanders).
+     * Collects the fruit wanted, exploring and then wandering when none is known.
      */
-    private Status forage(Predicate<KnownFruit> wanted) {
+    private void forage(Predicate<KnownFruit> wanted) {
         if (target != null && (memory.gone(target.id()) || harvester.givenUp(target.id()))
                 && !target.id().equals(harvester.current())) {
             target = null;
@@ -128,22 +90,14 @@ public final class Forager {
         }
         if (target != null) {
             Status status = harvester.collect(target);
-            if (status == Status.DONE) {
-                target = null;
-                return goal == null ? Status.RUNNING : Status.DONE;
-            }
-            if (status == Status.FAILED) {
+            if (status != Status.RUNNING) {
                 target = null;
             }
-            return Status.RUNNING;
+            return;
         }
         if (explorer.step(navigator) == Status.DONE) {
-            if (goal != null) {
-                return Status.FAILED;
-            }
             wanderer.step(navigator);
         }
-        return Status.RUNNING;
     }
 
     private void choose(Predicate<KnownFruit> wanted) {
@@ -175,6 +129,6 @@ public final class Forager {
 
     @Override
     public String toString() {
-        return String.format(Locale.ROOT, "Forager[goal=%s, target=%s]", goal, target == null ? null : target.id());
+        return String.format(Locale.ROOT, "Forager[target=%s]", target == null ? null : target.id());
     }
 }

@@ -14,9 +14,11 @@
  *   <li>{@link io.orchard.agents.behaviour.Wanderer}: walks about at random;
  *   <li>{@link io.orchard.agents.behaviour.Steering}: purely reactive steering from the current
  *       perception alone, for agents that keep no map;
- *   <li>{@link io.orchard.agents.behaviour.Forager}: the default autonomy that puts them together
- *       and takes instructed goals.
+ *   <li>{@link io.orchard.agents.behaviour.Forager}: the default autonomy that puts them together.
  * </ul>
+ *
+ * <p>Instructed goals are pursued with the same behaviours by
+ * {@link io.orchard.agents.errand.Errands}.
  *
  * <p>Behaviours are called on the controller's thread, once per tick; none is thread-safe.
  */

@@ -31,11 +31,12 @@ import java.util.function.Consumer;
  *
  * <ul>
  *   <li>{@code ./orchard agent --type dwarf [--name N] [--host H] [--port P] [--token T]}: one
- *       agent. Each line typed on the console is an instruction for it ("go to 10,-20",
- *       "collect banana", "stop", "carry on"); what it says is printed.
+ *       agent. Each line typed on the console is an instruction for it in English ("pick up the
+ *       coconut on the table", "cross the bridge", "stop", "carry on"); what it says, answers
+ *       included, is printed.
  *   <li>{@code ./orchard agents [--host H] [--port P] [--token T]}: all five, in one process,
  *       each on its own connection. A console line starting with an agent's name instructs that
- *       agent ("Dwarf: collect banana").
+ *       agent ("Dwarf: collect a banana", or "Guppy, stop").
  * </ul>
  *
  * <p>Both print the ranking and what each agent did when the game is over. The exit status is 0
@@ -49,7 +50,8 @@ public final class AgentMain {
 
     static final Options AGENT = new Options("orchard agent",
             "Runs one of the paper's agents against an Orchard server.\nLines typed on the console are"
-                    + " instructions for it: go to X,Z | collect banana | collect F12 | explore | stop | carry on.")
+                    + " instructions for it in English, such as: pick up the coconut on the table | cross the bridge"
+                    + " | go to the castle and then explore | follow Guppy | stop | carry on.")
             .value("type", "TYPE", "the agent: " + TYPES, null)
             .value("name", "NAME", "the agent's name in the world (default: its type's, as Dwarf)", null)
             .value("host", "HOST", "the server's host", "localhost")
@@ -58,7 +60,8 @@ public final class AgentMain {
 
     static final Options AGENTS = new Options("orchard agents",
             "Runs all five of the paper's agents against an Orchard server, each on its own connection.\n"
-                    + "A console line 'Name: instruction' instructs one of them, as in 'Dwarf: collect banana'.")
+                    + "A console line 'Name: instruction' instructs one of them, as in 'Dwarf: collect a banana'"
+                    + " or 'Guppy, stop'.")
             .value("host", "HOST", "the server's host", "localhost")
             .value("port", "N", "the server's port", "7557")
             .value("token", "SECRET", "the token the server requires, if any", null);
@@ -171,7 +174,7 @@ public final class AgentMain {
         }
     }
 
-    /** A console line for one of several agents: "Name: text" or "Name text". */
+    /** A console line for one of several agents: "Name: text", "Name, text" or "Name text". */
     static void route(String line, Map<String, AgentController> byName, PrintStream out) {
         String trimmed = line.strip();
         if (trimmed.isEmpty()) {
@@ -180,9 +183,10 @@ public final class AgentMain {
         int split = trimmed.indexOf(':');
         String first = split > 0 ? trimmed.substring(0, split) : trimmed.split("\\s+", 2)[0];
         String rest = split > 0 ? trimmed.substring(split + 1) : trimmed.substring(first.length());
-        AgentController agent = byName.get(first.strip().toLowerCase(Locale.ROOT));
+        // "Guppy, stop": the name ends with a comma, and the agent reads the rest
+        AgentController agent = byName.get(first.strip().replaceAll(",$", "").toLowerCase(Locale.ROOT));
         if (agent == null || rest.isBlank()) {
-            out.println("Start the line with the agent's name, as in 'Dwarf: collect banana'; agents: "
+            out.println("Start the line with the agent's name, as in 'Dwarf: collect a banana'; agents: "
                     + String.join(", ", byName.values().stream().map(AgentController::name).toList()));
             return;
         }

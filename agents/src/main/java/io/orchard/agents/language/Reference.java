@@ -93,6 +93,14 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         return kind.isFruit();
     }
 
+    /**
+     * One object of this reference in words, with its article, as the agent says it: "a coconut
+     * that lies on a table", "the nearest tree", "Roadrunner".
+     */
+    public String words() {
+        return Restatement.noun(this);
+    }
+
     /** This reference in the compact notation of {@link Goal#notation()}, e.g. {@code nearest banana on(table)}. */
     public String notation() {
         return Notation.of(this);

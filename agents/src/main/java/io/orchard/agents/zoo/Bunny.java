@@ -6,14 +6,12 @@ import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.GraspStatus;
 import io.orchard.agents.behaviour.MoveStatus;
 import io.orchard.agents.behaviour.Steering;
-import io.orchard.agents.goal.Goal;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.Obstruction;
 import io.orchard.protocol.value.PerceivedBridge;
 import io.orchard.protocol.value.PerceivedFruit;
 import io.orchard.protocol.value.Point2;
 import java.util.HashMap;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 
@@ -33,11 +31,12 @@ import java.util.Optional;
  * <ol>
  *   <li>a fruit on the ground within reach of its mouth: face it and eat;
  *   <li>a fruit on the ground in view: hop towards the nearest;
- *   <li>a point it was told to go to: hop towards it;
  *   <li>nothing to eat in view for a while and a bridge in view: hop across it;
  *   <li>otherwise: hop on in its current direction, turning now and then.
  * </ol>
- * Every hop is steered around the trunks, tables, agents and river bank in view
+ * An instruction overrides the rules while it lasts: the controller's errands pursue it with the
+ * map the controller keeps (the bunny's own rules keep none), and the rules take over again once
+ * it is done. Every hop is steered around the trunks, tables, agents and river bank in view
  * ({@link Steering}). Its only state is a handful of reflex timers: a heading it was just refused
  * (by the castle, which it cannot see) is shunned for a few seconds, a fruit it failed to eat or
  * could not get nearer to (across the river) is ignored for a while, and a bridge crossing, once
@@ -51,7 +50,6 @@ public final class Bunny extends AgentController {
     private static final double BORED_SECONDS = 4;
 
     private Steering steering;
-    private Goal instruction;
     private double wanderHeading = Double.NaN;
     private double turnAt;
     private double lastMeal;
@@ -94,18 +92,9 @@ public final class Bunny extends AgentController {
     }
 
     @Override
-    protected void onGoal(Goal goal) {
-        instruction = goal instanceof Goal.CarryOn ? null : goal;
-        say(goal instanceof Goal.CarryOn ? "*hops off*" : "*twitches ears*: " + goal.describe() + ".");
-    }
-
-    @Override
     protected void decide(Perception perception) {
         reflexes();
-        if (instruction instanceof Goal.Stop) {
-            if (motor().walking()) {
-                halt();
-            }
+        if (pursueInstruction()) {
             return;
         }
         Point2 here = perception.ground();
@@ -124,15 +113,6 @@ public final class Bunny extends AgentController {
             } else {
                 hopTowards(perception, Bearings.headingTowards(here, fruit.position().onGround()),
                         Math.min(HOP, distance - (reach - 0.2)));
-            }
-            return;
-        }
-        if (instruction instanceof Goal.GoTo go) {
-            if (here.distance(go.target()) < 0.7) {
-                say(String.format(Locale.ROOT, "*sits up* at (%.1f, %.1f).", go.target().x(), go.target().z()));
-                instruction = null;
-            } else {
-                hopTowards(perception, Bearings.headingTowards(here, go.target()), Math.min(HOP, here.distance(go.target())));
             }
             return;
         }
@@ -194,10 +174,6 @@ public final class Bunny extends AgentController {
         if (until != null && until > time()) {
             return false;
         }
-        if (instruction instanceof Goal.Collect collect && ((collect.kind() != null && fruit.kind() != collect.kind())
-                || (collect.fruitId() != null && !fruit.id().equals(collect.fruitId())))) {
-            return false;
-        }
         double y = fruit.position().y();
         return y >= bodyInForce().gripper().minHeight() + 0.006 && y <= bodyInForce().gripper().maxHeight() - 0.006;
     }
@@ -206,10 +182,6 @@ public final class Bunny extends AgentController {
         face(fruit.position().onGround());
         play(name() + "TSGrasp", 1.5);
         grasp(fruit.id());
-        if (instruction instanceof Goal.Collect) {
-            say("*munch* " + fruit.kind().wireName() + " " + fruit.id() + ".");
-            instruction = null;
-        }
     }
 
     private void hopTowards(Perception perception, double wanted, double length) {

@@ -5,7 +5,8 @@ import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.MoveStatus;
 import io.orchard.agents.behaviour.Status;
-import io.orchard.agents.goal.Goal;
+import io.orchard.agents.language.Stop;
+import io.orchard.agents.language.Wait;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.SeenAgent;
@@ -27,8 +28,8 @@ import java.util.List;
  * it. From the top:
  * <ol>
  *   <li><b>reflex</b>: when another agent is about to bump into it, or the server cut its move
- *       short, it steps aside for a moment;
- *   <li><b>obey</b>: while an instruction is pending, it carries it out;
+ *       short, it steps aside for a moment (unless it was told to stop or wait);
+ *   <li><b>obey</b>: while an instruction is pending, the controller's errands carry it out;
  *   <li><b>grab</b>: a fruit within reach of its hands is grasped at once;
  *   <li><b>forage</b>: walks to the nearest known fruit it can reach;
  *   <li><b>explore</b>: heads for what it has not seen;
@@ -51,9 +52,7 @@ public final class Dwarf extends AgentController {
     private final List<Layer> layers = List.of(this::reflex, this::obey, this::grab, this::forage, this::explore,
             this::wander);
     private Skills skills;
-    private Errand errand;
     private Pose pose;
-    private Goal instruction;
     private KnownFruit target;
     private double reflexUntil = Double.NEGATIVE_INFINITY;
     private Point2 aside;
@@ -86,18 +85,9 @@ public final class Dwarf extends AgentController {
     @Override
     protected void onRegistered() {
         skills = new Skills(memory(), motor(), random());
-        errand = new Errand(skills);
         pose = new Pose(motor());
         skills.harvester.gesture(pose.armsReach(0.45, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
                 ARM_LENGTH, raised -> raised.set("Neck", 0.3)));
-    }
-
-    @Override
-    protected void onGoal(Goal goal) {
-        instruction = goal instanceof Goal.CarryOn ? null : goal;
-        errand.reset();
-        target = null;
-        say(goal instanceof Goal.CarryOn ? "Back to my own business." : "Aye: " + goal.describe() + ".");
     }
 
     @Override
@@ -113,6 +103,9 @@ public final class Dwarf extends AgentController {
     // ---- the layers, from the top --------------------------------------------------------------
 
     private boolean reflex() {
+        if (errands().goal() instanceof Stop || errands().goal() instanceof Wait) {
+            return false; // told to stand still, it stands its ground
+        }
         MoveStatus last = motor().lastMove();
         boolean bumped = last != null && last.blocked() && last != reflexHandled;
         if (bumped) {
@@ -130,14 +123,10 @@ public final class Dwarf extends AgentController {
     }
 
     private boolean obey() {
-        if (instruction == null) {
+        if (!pursueInstruction()) {
             return false;
         }
-        Status status = errand.pursue(instruction);
-        if (status != Status.RUNNING) {
-            say(errand.answer());
-            instruction = null;
-        }
+        target = null; // chosen again afterwards, from what it knows then
         return true;
     }
 

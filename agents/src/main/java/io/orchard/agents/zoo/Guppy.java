@@ -4,13 +4,11 @@ import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.Status;
-import io.orchard.agents.goal.Goal;
+import io.orchard.agents.language.Goal;
 import io.orchard.agents.map.KnownFruit;
-import io.orchard.protocol.value.Point2;
 import java.util.ArrayDeque;
 import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.Predicate;
 
 /**
@@ -29,10 +27,9 @@ import java.util.function.Predicate;
  * the standing goal <em>forage</em>, which never ends: it pushes <em>collect</em> for the known
  * fruit that is cheapest to reach, else <em>explore</em>, else <em>wander</em> for a while.
  * A goal that is done or has failed is popped, and the goal below carries on (told how its
- * subgoal went). An instruction pushes its goal on top: <em>go to</em>, <em>seek</em> a kind of
- * fruit (which pushes its own explore and collect), <em>explore</em>, <em>halt</em>; "carry on"
- * pops every instructed goal; when an instructed goal is popped Guppy says how it went and
- * returns to what was below: its autonomy.
+ * subgoal went). An instruction pushes <em>obey</em> on top, which lets the controller's errands
+ * pursue the instructed goal and is popped when they are done with it (or on "carry on"); Guppy
+ * then returns to what was below: its autonomy.
  */
 public final class Guppy extends AgentController {
 
@@ -47,16 +44,6 @@ public final class Guppy extends AgentController {
 
         /** A subgoal it pushed was popped. */
         default void childFinished(Task child, Status status) {}
-
-        /** Whether a person asked for it (and is told when it is over). */
-        default boolean instructed() {
-            return false;
-        }
-
-        /** What to tell the person when it is over. */
-        default String report(Status status) {
-            return "";
-        }
     }
 
     private final Deque<Task> stack = new ArrayDeque<>();
@@ -98,27 +85,10 @@ public final class Guppy extends AgentController {
 
     @Override
     protected void onGoal(Goal goal) {
-        if (goal instanceof Goal.CarryOn) {
-            while (stack.size() > 1 && stack.peek().instructed()) {
-                stack.pop();
-            }
-            skills.navigator.reset();
-            say("Carrying on.");
-            return;
+        super.onGoal(goal);
+        if (!(stack.peek() instanceof Obey)) {
+            stack.push(new Obey());
         }
-        Task task;
-        if (goal instanceof Goal.GoTo go) {
-            task = new GoTo(go.target());
-        } else if (goal instanceof Goal.Collect collect) {
-            task = new Seek(collect);
-        } else if (goal instanceof Goal.Explore) {
-            task = new Explore(f -> false, true);
-        } else {
-            task = new Halt();
-        }
-        skills.navigator.reset();
-        stack.push(task);
-        say("OK: " + goal.describe() + ".");
     }
 
     @Override
@@ -129,9 +99,6 @@ public final class Guppy extends AgentController {
             Status status = top.step();
             if (status != Status.RUNNING && stack.size() > 1) {
                 stack.pop();
-                if (top.instructed()) {
-                    say(top.report(status));
-                }
                 stack.peek().childFinished(top, status);
                 continue;
             }
@@ -170,7 +137,7 @@ public final class Guppy extends AgentController {
             if (fruit != null) {
                 stack.push(new Collect(fruit));
             } else if (!memory().coverage().unseen().isEmpty()) {
-                stack.push(new Explore(f -> true, false));
+                stack.push(new Explore(f -> true));
             } else {
                 stack.push(new Wander(time() + 5));
             }
@@ -192,14 +159,12 @@ public final class Guppy extends AgentController {
         }
     }
 
-    /** Explore until a fruit that passes {@code found} is known (or, instructed, until all is seen). */
+    /** Explore until a fruit that passes {@code found} is known, or all is seen. */
     private final class Explore implements Task {
         private final Predicate<KnownFruit> found;
-        private final boolean instructed;
 
-        Explore(Predicate<KnownFruit> found, boolean instructed) {
+        Explore(Predicate<KnownFruit> found) {
             this.found = found;
-            this.instructed = instructed;
         }
 
         @Override
@@ -208,16 +173,6 @@ public final class Guppy extends AgentController {
                 return Status.DONE;
             }
             return skills.explorer.step(skills.navigator) == Status.DONE ? Status.DONE : Status.RUNNING;
-        }
-
-        @Override
-        public boolean instructed() {
-            return instructed;
-        }
-
-        @Override
-        public String report(Status status) {
-            return "I have explored all I can reach.";
         }
     }
 
@@ -239,94 +194,15 @@ public final class Guppy extends AgentController {
         }
     }
 
-    /** Go to a point (instructed). */
-    private final class GoTo implements Task {
-        private final Point2 target;
-
-        GoTo(Point2 target) {
-            this.target = target;
-        }
-
+    /** An instruction: the errands have Guppy until they are done with it. */
+    private final class Obey implements Task {
         @Override
         public Status step() {
-            return skills.navigator.goTo(target, 0.5);
-        }
-
-        @Override
-        public boolean instructed() {
-            return true;
-        }
-
-        @Override
-        public String report(Status status) {
-            return String.format(Locale.ROOT, status == Status.DONE ? "I am at (%.1f, %.1f)."
-                    : "I cannot find a way to (%.1f, %.1f).", target.x(), target.z());
-        }
-    }
-
-    /** Collect a fruit of a kind, or a named one (instructed): pushes explore and collect. */
-    private final class Seek implements Task {
-        private final Goal.Collect goal;
-        private final Predicate<KnownFruit> wanted;
-        private String collected;
-        private boolean exhausted;
-
-        Seek(Goal.Collect goal) {
-            this.goal = goal;
-            this.wanted = f -> (goal.kind() == null || f.kind() == goal.kind())
-                    && (goal.fruitId() == null || f.id().equals(goal.fruitId()));
-        }
-
-        @Override
-        public Status step() {
-            if (collected != null) {
-                return Status.DONE;
+            if (pursueInstruction()) {
+                return Status.RUNNING;
             }
-            KnownFruit fruit = cheapest(wanted);
-            if (fruit != null) {
-                stack.push(new Collect(fruit));
-            } else if (!exhausted && !memory().coverage().unseen().isEmpty()) {
-                stack.push(new Explore(wanted, false));
-            } else {
-                return Status.FAILED;
-            }
-            return Status.RUNNING;
-        }
-
-        @Override
-        public void childFinished(Task child, Status status) {
-            if (child instanceof Collect collect && status == Status.DONE) {
-                collected = collect.fruit.kind().wireName() + " " + collect.fruit.id();
-            } else if (child instanceof Explore && skills.harvester.candidates(wanted).isEmpty()) {
-                exhausted = true;
-            }
-        }
-
-        @Override
-        public boolean instructed() {
-            return true;
-        }
-
-        @Override
-        public String report(Status status) {
-            return status == Status.DONE ? "Done: I collected the " + collected + "."
-                    : "I know of no fruit I can reach for '" + goal.describe() + "'.";
-        }
-    }
-
-    /** Stand still until told to carry on (instructed). */
-    private final class Halt implements Task {
-        @Override
-        public Status step() {
-            if (motor().walking()) {
-                motor().halt();
-            }
-            return Status.RUNNING;
-        }
-
-        @Override
-        public boolean instructed() {
-            return true;
+            skills.navigator.reset(); // its last route is stale
+            return Status.DONE;
         }
     }
 }

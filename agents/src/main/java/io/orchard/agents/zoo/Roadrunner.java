@@ -5,7 +5,8 @@ import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Status;
-import io.orchard.agents.goal.Goal;
+import io.orchard.agents.language.Goal;
+import io.orchard.agents.language.Stop;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.protocol.message.GraspResultMessage;
 import io.orchard.protocol.value.FruitKind;
@@ -29,7 +30,8 @@ import java.util.List;
  * an arbiter gives control to the highest score, with a small bonus for the behaviour in control
  * so that it does not dither between near-equal choices. The behaviours:
  * <ul>
- *   <li><b>obey</b>: 1 while an instruction is pending;
+ *   <li><b>obey</b>: 2, above all others, while an instruction is pending (the controller's errands
+ *       carry it out);
  *   <li><b>peck</b>: for the best known fruit, more for more points and less the longer the run
  *       there ({@code 0.5 + 0.5 * points / 3 * exp(-seconds / 20)});
  *   <li><b>explore</b>: {@code 0.45} times the square root of the share of the world not yet seen;
@@ -53,16 +55,12 @@ public final class Roadrunner extends AgentController {
     private final Behaviour obey = new Behaviour() {
         @Override
         public double utility() {
-            return instruction == null ? 0 : 1;
+            return instructed() ? 2 : 0; // above every other score, hysteresis included: a person asked
         }
 
         @Override
         public void act() {
-            Status status = errand.pursue(instruction);
-            if (status != Status.RUNNING) {
-                say(errand.answer());
-                instruction = null;
-            }
+            pursueInstruction();
         }
     };
 
@@ -113,9 +111,7 @@ public final class Roadrunner extends AgentController {
 
     private final List<Behaviour> behaviours = List.of(obey, peck, explore, wander);
     private Skills skills;
-    private Errand errand;
     private Pose pose;
-    private Goal instruction;
     private Behaviour active;
     private KnownFruit prey;
     private double preyScore;
@@ -151,7 +147,6 @@ public final class Roadrunner extends AgentController {
     protected void onRegistered() {
         skills = new Skills(memory(), motor(), random());
         skills.navigator.faceBeyond(Math.toRadians(100));
-        errand = new Errand(skills);
         pose = new Pose(motor());
         skills.harvester.gesture(new Harvester.Gesture() {
             @Override
@@ -172,12 +167,10 @@ public final class Roadrunner extends AgentController {
 
     @Override
     protected void onGoal(Goal goal) {
-        instruction = goal instanceof Goal.CarryOn ? null : goal;
-        errand.reset();
-        if (goal instanceof Goal.Stop) {
-            play(name() + "TSKneel", 2);
+        super.onGoal(goal);
+        if (goal instanceof Stop) {
+            play(name() + "TSKneel", 2); // it kneels to wait
         }
-        say(goal instanceof Goal.CarryOn ? "Meep meep!" : "Meep: " + goal.describe() + ".");
     }
 
     @Override

@@ -5,7 +5,6 @@ import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
 import io.orchard.agents.behaviour.Explorer;
 import io.orchard.agents.behaviour.Status;
-import io.orchard.agents.goal.Goal;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.Coverage;
 import io.orchard.agents.map.KnownFruit;
@@ -17,7 +16,6 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.Predicate;
 
 /**
@@ -37,7 +35,8 @@ import java.util.function.Predicate;
  * legs estimated), or, when it knows no fruit, a <em>survey</em> of the frontier point that
  * promises the most unseen ground for the walk. It then executes the plan step by step and plans
  * again when the map changes (new fruit, fruit gone), when a step fails, or every few seconds.
- * Instructions replace the plan: a trip, a tour restricted to the fruit asked for, or a hold.
+ * An instruction suspends the plan: the controller's errands pursue it, and the robot plans anew
+ * once it is done.
  */
 public final class Robot extends AgentController {
 
@@ -48,7 +47,7 @@ public final class Robot extends AgentController {
     private static final double REPLAN_SECONDS = 8;
 
     /** A step of the robot's plan. */
-    private sealed interface Step permits Fetch, Survey, Travel, Hold {}
+    private sealed interface Step permits Fetch, Survey {}
 
     /** Collect this fruit. */
     private record Fetch(KnownFruit fruit) implements Step {}
@@ -56,16 +55,9 @@ public final class Robot extends AgentController {
     /** Walk to a frontier point to see what is there. */
     private record Survey(Point2 where) implements Step {}
 
-    /** Walk to a point (an instruction). */
-    private record Travel(Point2 where) implements Step {}
-
-    /** Stand still (an instruction). */
-    private record Hold() implements Step {}
-
     private final Deque<Step> plan = new ArrayDeque<>();
     private Skills skills;
     private Pose pose;
-    private Goal instruction;
     private long plannedFruit = -1;
     private double plannedAt = Double.NEGATIVE_INFINITY;
     private double headAngle;
@@ -104,18 +96,14 @@ public final class Robot extends AgentController {
     }
 
     @Override
-    protected void onGoal(Goal goal) {
-        instruction = goal instanceof Goal.CarryOn ? null : goal;
-        plan.clear();
-        skills.navigator.reset();
-        say(goal instanceof Goal.CarryOn ? "Resuming my own plan." : "Acknowledged: " + goal.describe() + ".");
-    }
-
-    @Override
     protected void decide(Perception perception) {
         pose.update();
+        if (pursueInstruction()) {
+            plan.clear(); // the plan is stale once the instruction is done
+            return;
+        }
         if (plan.isEmpty() || time() - plannedAt >= REPLAN_SECONDS
-                || (instruction == null && memory().fruitVersion() != plannedFruit && time() - plannedAt >= 1)) {
+                || (memory().fruitVersion() != plannedFruit && time() - plannedAt >= 1)) {
             replan();
         }
         execute();
@@ -127,30 +115,13 @@ public final class Robot extends AgentController {
         plan.clear();
         plannedAt = time();
         plannedFruit = memory().fruitVersion();
-        if (instruction instanceof Goal.Stop) {
-            plan.add(new Hold());
-        } else if (instruction instanceof Goal.GoTo go) {
-            plan.add(new Travel(go.target()));
-        } else if (instruction instanceof Goal.Collect collect) {
-            tour(f -> (collect.kind() == null || f.kind() == collect.kind())
-                    && (collect.fruitId() == null || f.id().equals(collect.fruitId())), 1);
-        } else if (instruction == null) {
-            tour(f -> true, TOUR_LENGTH);
-        }
-        if (plan.isEmpty() && !(instruction instanceof Goal.Collect && everythingSeen())) {
+        tour(f -> true, TOUR_LENGTH);
+        if (plan.isEmpty()) {
             Point2 frontier = frontier();
             if (frontier != null) {
                 plan.add(new Survey(frontier));
             }
         }
-        if (plan.isEmpty() && instruction != null) {
-            say("I have no plan for '" + instruction.describe() + "': nothing I can reach.");
-            instruction = null;
-        }
-    }
-
-    private boolean everythingSeen() {
-        return memory().coverage().unseen().isEmpty();
     }
 
     /** Orders up to {@code length} reachable fruit greedily by (path length) / (value). */
@@ -245,20 +216,7 @@ public final class Robot extends AgentController {
             skills.wanderer.step(skills.navigator);
             return;
         }
-        if (step instanceof Hold) {
-            if (motor().walking()) {
-                motor().halt();
-            }
-        } else if (step instanceof Travel travel) {
-            look(travel.where());
-            Status status = skills.navigator.goTo(travel.where(), 0.5);
-            if (status != Status.RUNNING) {
-                plan.poll();
-                say(String.format(Locale.ROOT, status == Status.DONE ? "Arrived at (%.1f, %.1f)."
-                        : "I see no way to (%.1f, %.1f).", travel.where().x(), travel.where().z()));
-                instruction = null;
-            }
-        } else if (step instanceof Survey survey) {
+        if (step instanceof Survey survey) {
             look(survey.where());
             Status status = skills.navigator.goTo(survey.where(), Coverage.CELL);
             if (status == Status.FAILED) {
@@ -279,10 +237,6 @@ public final class Robot extends AgentController {
         Status status = skills.harvester.collect(fruit);
         if (status != Status.RUNNING) {
             plan.poll();
-            if (instruction != null && plan.isEmpty()) {
-                say(status == Status.DONE ? "Collected " + fruit.id() + "." : "I could not collect " + fruit.id() + ".");
-                instruction = null;
-            }
         }
     }
 

@@ -17,8 +17,11 @@
  *       <td>behaviour-based arbiter with utility scores</td></tr>
  * </table>
  *
- * <p>Each explores and collects on its own until the game ends, takes structured instructions
- * ("go to 10,-20", "collect banana", "stop", "carry on") and returns to its autonomy when an
- * instruction is done. {@link io.orchard.agents.zoo.Species} makes them by name.
+ * <p>Each explores and collects on its own until the game ends, follows instructions in English
+ * ("walk to the big tree by the river", "pick up the coconut on the table", "stop", "carry on")
+ * and returns to its autonomy when an instruction is done. Each gives an instruction its place in
+ * its own architecture (a layer, a behaviour, a goal on the stack, a pause of the plan or of the
+ * rules); the controller's {@link io.orchard.agents.errand.Errands} carry it out.
+ * {@link io.orchard.agents.zoo.Species} makes them by name.
  */
 package io.orchard.agents.zoo;

@@ -81,7 +81,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Gup (guppy) joins the game", "Gup: OK: explore.", "Gup: I do not understand: 'dance'",
+            assertThat(out()).contains("Gup (guppy) joins the game", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
                     "Game over (time limit reached). Ranking:", "1. Gup", "Gup: ");
         }
 
@@ -90,12 +90,13 @@ class AgentMainTest {
             try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(10)
                     .waitFor(5).start()) {
                 int status = AgentMain.agents(List.of("--host", "127.0.0.1", "--port", String.valueOf(server.port())),
-                        console("Dwarf: stop\nroadrunner carry on\nnobody: hello\n"), print(out), print(err));
+                        console("Dwarf: stop\nroadrunner carry on\nGuppy, turn left\nnobody: hello\n"), print(out), print(err));
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner join the game", "Dwarf: Aye: stop.",
-                    "Roadrunner: Meep meep!", "Start the line with the agent's name", "Game over", "Bunny: ");
+            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner join the game", "Dwarf: Stopping.",
+                    "Roadrunner: Carrying on by myself.", "Guppy: Turning left.", "Start the line with the agent's name",
+                    "Game over", "Bunny: ");
         }
     }
 }

@@ -69,6 +69,12 @@ public final class Views {
         return this;
     }
 
+    /** A fruit lying on a table or hanging in a tree: {@code support} is its id. */
+    public Views fruit(String id, FruitKind kind, double x, double y, double z, String support) {
+        fruit.add(new PerceivedFruit(id, kind, new Vec3(x, y, z), kind.radius(), support));
+        return this;
+    }
+
     /** The river's nearest bank point and the heading in which the river runs there. */
     public Views river(double x, double z, double runs) {
         river = new PerceivedRiver(relative(x, z), normalise(runs - heading));

@@ -1,0 +1,320 @@
+package io.orchard.agents.errand;
+
+import io.orchard.agents.behaviour.Harvester;
+import io.orchard.agents.behaviour.Motor;
+import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.CarryOn;
+import io.orchard.agents.language.Collect;
+import io.orchard.agents.language.ComeBack;
+import io.orchard.agents.language.Cross;
+import io.orchard.agents.language.Explore;
+import io.orchard.agents.language.Face;
+import io.orchard.agents.language.Follow;
+import io.orchard.agents.language.Goal;
+import io.orchard.agents.language.GoTo;
+import io.orchard.agents.language.Head;
+import io.orchard.agents.language.LookAt;
+import io.orchard.agents.language.LookFor;
+import io.orchard.agents.language.Move;
+import io.orchard.agents.language.Reference;
+import io.orchard.agents.language.Sequence;
+import io.orchard.agents.language.Stop;
+import io.orchard.agents.language.Turn;
+import io.orchard.agents.language.Wait;
+import io.orchard.agents.map.Bearings;
+import io.orchard.agents.map.WorldMemory;
+import io.orchard.protocol.value.Nullable;
+import io.orchard.protocol.value.Point2;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.Optional;
+
+/**
+ * Carries out the goals people give an agent ({@link io.orchard.agents.language.Goal}), with the
+ * agent's behaviours: it grounds each goal's references in the agent's {@link WorldMemory} when
+ * the goal starts, says what it is doing, pursues the goal a tick at a time, says how it went, and
+ * then leaves the agent to its own autonomy.
+ *
+ * <ul>
+ *   <li>Every instruction is answered at once with one line: the goal's restatement ("Going to
+ *       pick up a coconut that lies on a table."), a question, or why it cannot be done.
+ *   <li>Nothing known fits: the agent says so ("I don't know of a coconut that lies on a table yet;
+ *       I'll look for one.") and explores until something fits, then pursues it.
+ *   <li>Several trees, tables or bridges fit and nothing in the words picks one: the agent asks
+ *       which ({@link #asking()}) and stands still; {@link #answer(String)} reads the reply ("the
+ *       nearer one", "the north one", "2"). A new instruction cancels the question; with no reply
+ *       for {@value #ANSWER_SECONDS} seconds the agent takes the nearest.
+ *   <li>The body cannot do it (a bunny asked for a coconut in a tree): the agent says why and
+ *       drops that goal.
+ *   <li>Over: the agent says how it went and, after the last step, that it carries on by itself.
+ * </ul>
+ *
+ * <p>The controller calls {@link #take(Goal)} for each instruction and {@link #step()} every tick
+ * it decides; while {@code step()} returns true the goal has the agent, and the agent's own
+ * behaviour should rest for that tick. Not thread-safe: it belongs to the controller's thread.
+ */
+public final class Errands {
+
+    /** How long the agent waits for the answer to a question before it takes the nearest choice. */
+    public static final double ANSWER_SECONDS = 30;
+
+    private static final String CARRYING_ON = " Carrying on by myself.";
+
+    private final Kit kit;
+    private final Deque<Goal> steps = new ArrayDeque<>();
+    private Goal goal;
+    private Pursuit pursuit;
+    private Question question;
+    private double askedAt;
+    private Point2 origin;
+    private Point2 previousOrigin;
+
+    /** Errands for the agent {@code motor} drives and {@code memory} remembers for. */
+    public Errands(WorldMemory memory, Motor motor) {
+        this.kit = new Kit(memory, motor);
+        this.origin = memory.position();
+        this.previousOrigin = origin;
+    }
+
+    /** The harvester the errands collect with: set its gesture to animate the grasp. */
+    public Harvester harvester() {
+        return kit.harvester;
+    }
+
+    /** The goal being pursued (a sequence's current step); null when none. */
+    public @Nullable Goal goal() {
+        return goal;
+    }
+
+    /** Whether the agent has asked which thing is meant and waits for the answer. */
+    public boolean asking() {
+        return question != null;
+    }
+
+    /** Whether an instructed goal has the agent: one is pursued, or a question waits for its answer. */
+    public boolean busy() {
+        return pursuit != null || question != null;
+    }
+
+    /**
+     * Takes a new goal in place of any other (and of any question asked): grounds it, answers the
+     * person with one line, and starts it. {@link CarryOn} drops every goal.
+     */
+    public void take(Goal instructed) {
+        question = null;
+        pursuit = null;
+        goal = null;
+        steps.clear();
+        kit.navigator.reset();
+        previousOrigin = origin;
+        origin = kit.here();
+        if (instructed instanceof CarryOn) {
+            kit.motor.say(instructed.restatement());
+            return;
+        }
+        if (instructed instanceof Stop) {
+            kit.standStill(); // at once: the halt is sent in this tick
+        }
+        if (instructed instanceof Sequence sequence) {
+            steps.addAll(sequence.steps());
+        } else {
+            steps.add(instructed);
+        }
+        String refused = refusal(steps.peek());
+        if (refused == null && ambiguity(steps.peek()) == null) {
+            kit.motor.say(instructed.restatement());
+        }
+        next();
+    }
+
+    /**
+     * Reads a reply to the question asked, if there is one and the reply picks out one of the
+     * choices; the goal then goes on with that one.
+     *
+     * @return whether the text was taken as the answer
+     */
+    public boolean answer(String text) {
+        if (question == null || text == null) {
+            return false;
+        }
+        Optional<Known> picked = question.read(text);
+        if (picked.isEmpty()) {
+            return false;
+        }
+        resolve(picked.get(), "All right, " + Restated.thing(picked.get()) + ".");
+        return true;
+    }
+
+    /** The question waiting for its answer, to say again; null when none. */
+    public @Nullable String question() {
+        return question == null ? null : question.text();
+    }
+
+    /**
+     * One tick of the instructed goal.
+     *
+     * @return whether the goal has the agent this tick; false when there is none, and the agent's
+     *         own behaviour may act
+     */
+    public boolean step() {
+        if (question != null) {
+            kit.standStill();
+            if (kit.motor.time() - askedAt >= ANSWER_SECONDS) {
+                Known nearest = question.read("1").orElseThrow();
+                resolve(nearest, "No answer: I'll take the nearest, " + Restated.thing(nearest) + ".");
+            }
+            return true;
+        }
+        if (pursuit == null) {
+            return false;
+        }
+        Status status = pursuit.step();
+        if (status == Status.RUNNING) {
+            return true;
+        }
+        String outcome = pursuit.outcome();
+        pursuit = null;
+        goal = null;
+        kit.navigator.reset();
+        if (steps.isEmpty()) {
+            kit.motor.say(outcome + CARRYING_ON);
+        } else {
+            if (!outcome.isEmpty()) {
+                kit.motor.say(outcome);
+            }
+            next();
+        }
+        return true;
+    }
+
+    // ---- starting a goal ------------------------------------------------------------------------
+
+    /** Starts the next step that can be started; says why for those that cannot. */
+    private void next() {
+        while (!steps.isEmpty()) {
+            Goal step = steps.poll();
+            String refused = refusal(step);
+            if (refused != null) {
+                kit.motor.say(refused + (steps.isEmpty() ? "" : " I'll go on with the rest."));
+                continue;
+            }
+            Reference asked = ambiguity(step);
+            if (asked != null) {
+                Grounding grounding = kit.grounder.ground(asked);
+                question = new Question(step, asked.kind(), ((Grounding.Ambiguous) grounding).choices(), kit.memory,
+                        kit.grounder);
+                askedAt = kit.motor.time();
+                goal = step;
+                kit.motor.say(question.text());
+                return;
+            }
+            goal = step;
+            pursuit = pursuit(step, null);
+            return;
+        }
+    }
+
+    private void resolve(Known chosen, String said) {
+        Goal step = question.goal();
+        question = null;
+        kit.motor.say(said);
+        goal = step;
+        pursuit = pursuit(step, chosen);
+    }
+
+    /** Why the body cannot do this goal at all; null when it may. */
+    private String refusal(Goal step) {
+        if (step instanceof Collect collect) {
+            return Reach.refusal(collect.what(), kit.motor.body().gripper(), collect.what().words());
+        }
+        return null;
+    }
+
+    /** The reference of this goal that fits several landmarks with nothing to choose between them; null when none. */
+    private Reference ambiguity(Goal step) {
+        Reference reference = null;
+        if (step instanceof GoTo goTo) {
+            reference = goTo.destination();
+        } else if (step instanceof LookAt lookAt) {
+            reference = lookAt.target();
+        } else if (step instanceof Cross cross && cross.landmark().kind() == Reference.Kind.BRIDGE) {
+            reference = cross.landmark();
+        }
+        if (reference == null || !Grounder.asksWhich(reference.kind())) {
+            return null;
+        }
+        return kit.grounder.ground(reference) instanceof Grounding.Ambiguous ? reference : null;
+    }
+
+    /** The pursuit of one goal (never a sequence), with the thing the person chose, if asked. */
+    private Pursuit pursuit(Goal step, @Nullable Known chosen) {
+        double heading = kit.motor.heading();
+        if (step instanceof GoTo goTo) {
+            return goTo.destination().kind() == Reference.Kind.PLACE ? new GoingToPlace(kit, goTo.destination())
+                    : new GoingTo(kit, goTo.destination(), chosen);
+        }
+        if (step instanceof Cross cross) {
+            if (cross.landmark().kind() == Reference.Kind.FOREST) {
+                return throughTheForest();
+            }
+            return new Crossing(kit, cross.landmark(), chosen);
+        }
+        if (step instanceof Head head) {
+            return Walking.on(kit, Turning.heading(head.direction()), head.direction().wireName());
+        }
+        if (step instanceof Move move) {
+            return switch (move.direction()) {
+                case FORWARD -> Walking.steps(kit, heading, false);
+                case BACKWARD -> Walking.steps(kit, heading + Math.PI, true);
+                case LEFT -> Walking.steps(kit, heading + Math.PI / 2, false);
+                case RIGHT -> Walking.steps(kit, heading - Math.PI / 2, false);
+            };
+        }
+        if (step instanceof ComeBack) {
+            return Walking.to(kit, previousOrigin, "I'm back.");
+        }
+        if (step instanceof Collect collect) {
+            return new Gathering(kit, collect);
+        }
+        if (step instanceof Turn turn) {
+            return Turning.by(kit, turn.radians());
+        }
+        if (step instanceof Face face) {
+            return Turning.toward(kit, face.direction());
+        }
+        if (step instanceof LookAt lookAt) {
+            return Turning.at(kit, lookAt.target(), chosen);
+        }
+        if (step instanceof LookFor lookFor) {
+            return new Searching(kit, lookFor.what());
+        }
+        if (step instanceof Explore explore) {
+            return new Surveying(kit, explore.area());
+        }
+        if (step instanceof Follow follow) {
+            return new Following(kit, follow.agent());
+        }
+        if (step instanceof Wait wait) {
+            return new Holding(kit, wait.seconds());
+        }
+        if (step instanceof Stop) {
+            return new Holding(kit, Wait.UNTIL_TOLD);
+        }
+        // CarryOn inside a sequence: the rest is dropped, and the agent is on its own again
+        steps.clear();
+        return new Holding(kit, 0);
+    }
+
+    /** Through the forest: past its nearest known tree, as far again on the other side. */
+    private Pursuit throughTheForest() {
+        Reference forest = Reference.to(Reference.Kind.FOREST);
+        Grounding grounding = kit.grounder.ground(forest);
+        if (!(grounding instanceof Grounding.Found found)) {
+            return new GoingTo(kit, forest, null);
+        }
+        Point2 here = kit.here();
+        Point2 tree = found.chosen().where();
+        Point2 beyond = Bearings.ahead(tree, Bearings.headingTowards(here, tree), Math.max(10, here.distance(tree)));
+        return Walking.to(kit, beyond, "Done: I went through the forest.");
+    }
+}

@@ -1,0 +1,91 @@
+package io.orchard.agents.errand;
+
+import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.Collect;
+import io.orchard.agents.language.Reference;
+import io.orchard.agents.map.KnownFruit;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * Collecting fruit that fits a reference, one after the other, until {@link Collect#count()} are
+ * the agent's or, for "all", until it knows of no more. Each fruit is chosen when the last is
+ * done, from what memory holds then (so "the coconut on the table" means a coconut that lies on a
+ * table now), and kept until it is collected or lost; while none is known the agent looks for one.
+ */
+final class Gathering implements Pursuit {
+
+    private final Kit kit;
+    private final Collect goal;
+    private final Looking looking;
+    private KnownFruit fruit;
+    private int collected;
+    private String last;
+    private String outcome = "";
+
+    Gathering(Kit kit, Collect goal) {
+        this.kit = kit;
+        this.goal = goal;
+        this.looking = new Looking(kit, goal.what());
+    }
+
+    @Override
+    public Status step() {
+        if (fruit != null && kit.memory.gone(fruit.id()) && !fruit.id().equals(kit.harvester.current())) {
+            fruit = null; // someone else took it
+        }
+        if (fruit == null) {
+            fruit = choose();
+            kit.navigator.reset();
+        }
+        if (fruit == null) {
+            if (goal.isAll() && collected > 0) {
+                outcome = "Done: I collected " + collected + " and know of no more " + Restated.bare(goal.what()) + ".";
+                return Status.DONE;
+            }
+            Status status = looking.step();
+            if (status == Status.FAILED) {
+                outcome = collected > 0 ? "I collected " + collected + ", and found no more "
+                        + Restated.bare(goal.what()) + "." : looking.failure();
+            }
+            return status;
+        }
+        Status status = kit.harvester.collect(fruit);
+        if (status == Status.DONE) {
+            collected++;
+            last = fruit.kind().wireName() + " " + fruit.id();
+            fruit = null;
+            if (!goal.isAll() && collected >= goal.count()) {
+                outcome = collected == 1 ? "Done: I picked up the " + last + "."
+                        : "Done: I collected " + collected + ", the last the " + last + ".";
+                return Status.DONE;
+            }
+            kit.motor.say("Got the " + last + (goal.isAll() ? "." : "; " + (goal.count() - collected) + " to go."));
+        } else if (status == Status.FAILED) {
+            fruit = null; // out of reach after all: another one
+        }
+        return Status.RUNNING;
+    }
+
+    @Override
+    public String outcome() {
+        return outcome;
+    }
+
+    /** The fruit to go for: one that fits the words now and that the gripper reaches. */
+    private KnownFruit choose() {
+        Reference what = goal.what();
+        List<Known> fits = kit.grounder.select(what, kit.grounder.fitting(what));
+        Set<String> ids = new HashSet<>();
+        fits.forEach(k -> ids.add(k.id()));
+        List<KnownFruit> reachable = kit.harvester.candidates(f -> ids.contains(f.id()));
+        if (reachable.isEmpty()) {
+            return null;
+        }
+        if (what.distance() == Reference.Distance.FARTHEST) {
+            return reachable.get(reachable.size() - 1);
+        }
+        return reachable.get(0);
+    }
+}
