@@ -373,12 +373,13 @@ public final class Simulation implements Inbox {
                     + " different agents, the most it takes"));
         } else {
             var body = config.bodyLimits().cap(register.body());
-            Vec3 place = placeFor(name, body.radius());
+            java.util.random.RandomGenerator draws = placing(name);
+            Vec3 place = placeFor(name, body.radius(), draws);
             if (place == null) {
                 send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent"));
                 return;
             }
-            double heading = Angles.normalise(placing(name).nextDouble() * 2 * Math.PI - Math.PI);
+            double heading = Angles.normalise(draws.nextDouble() * 2 * Math.PI - Math.PI);
             departed.remove(name);
             enter(session, seq, new Agent(name, session, body, register.model(), place, heading, newToken()));
             if (phase == Phase.WAITING && agents.size() >= Math.max(1, config.waitFor())) {
@@ -395,7 +396,7 @@ public final class Simulation implements Inbox {
         Vec3 place = saved.position();
         double radius = saved.body().radius();
         if (!world.checkPlace(place.onGround(), radius).isFree() || !walking.clearOfAgents(place, radius, null)) {
-            place = placeFor(saved.name(), radius);
+            place = placeFor(saved.name(), radius, placing(saved.name()));
             if (place == null) {
                 send(session, new ErrorMessage(seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent"));
                 return false;
@@ -442,13 +443,12 @@ public final class Simulation implements Inbox {
     }
 
     /** A free place for a body of this radius: the placement's, or drawn from the game's seed and the name. */
-    private Vec3 placeFor(String name, double radius) {
+    private Vec3 placeFor(String name, double radius, java.util.random.RandomGenerator draws) {
         Vec3 wanted = placement.placeFor(name, radius);
         if (wanted != null && world.checkPlace(wanted.onGround(), radius).isFree()
                 && walking.clearOfAgents(wanted, radius, null)) {
             return Vec3.ground(wanted.x(), wanted.z());
         }
-        java.util.random.RandomGenerator draws = placing(name);
         for (int attempt = 0; attempt < 500; attempt++) {
             Vec3 candidate = world.randomFreePoint(draws, radius + 0.1);
             if (candidate != null && walking.clearOfAgents(candidate, radius, null)) {
