@@ -36,6 +36,18 @@ class TournamentTest {
     }
 
     @Test
+    void theSameSeedsGiveTheSameResults(@TempDir Path again) throws Exception {
+        // Agents on their own threads race to connect and to act; in lockstep that must not show.
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        assertThat(new TournamentCommand().run(List.of("--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
+                "--seed-from", "40", "--time-limit", "15", "--out", again.toString()), out, out)).isZero();
+
+        assertThat(Files.readAllLines(again.resolve("results.csv"), StandardCharsets.UTF_8))
+                .isEqualTo(Files.readAllLines(dir.resolve("results.csv"), StandardCharsets.UTF_8));
+    }
+
+    @Test
     void theCsvHasAHeaderAndOneRowPerAgentPerGame() throws Exception {
         List<String> lines = Files.readAllLines(dir.resolve("results.csv"), StandardCharsets.UTF_8);
 
