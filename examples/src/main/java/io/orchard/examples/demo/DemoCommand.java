@@ -22,9 +22,9 @@ public final class DemoCommand implements Command {
     private static final Options OPTIONS = new Options("orchard demo",
             "Runs a whole match in this one process: a world server with a fresh seed (printed), the paper's five"
                     + "\nagents, and the viewer, in a window when there is a display, headless otherwise, writing a"
-                    + "\nscreenshot every " + (int) EVERY + " s of the game to a folder it names. The game ends at"
-                    + " the time limit or\nwhen all fruit is collected, and the ranking is printed.\n\nHeadless"
-                    + " without a display needs xvfb-run (Debian/Ubuntu: apt-get install xvfb xauth).")
+                    + "\nscreenshot every " + (int) EVERY + " s of the game and one of its end to a folder it names."
+                    + "\nThe game ends at the time limit or when all fruit is collected, and the ranking is printed."
+                    + "\n\nHeadless without a display needs xvfb-run (Debian/Ubuntu: apt-get install xvfb xauth).")
             .value("seed", "N", "seed of the world; drawn and printed when absent", null)
             .value("time-limit", "SECONDS", "length of the game in simulated (here: wall-clock) seconds", "300")
             .flag("headless", "render off screen and write screenshots, even where there is a display")

@@ -49,6 +49,10 @@ class DemoCommandTest {
             pictures = files.filter(file -> file.toString().endsWith(".png")).toList();
         }
         assertThat(pictures).as(printed).isNotEmpty().contains(shots.resolve("t0000.00.png"));
+        // The game ends between two shots (4 s, a shot every 10 s): the last picture is its final state.
+        assertThat(pictures).as(printed).anyMatch(file -> file.getFileName().toString().matches("t\\d{4}\\.\\d\\d-final\\.png"));
+        assertThat(printed).as("the final picture shows where the five agents ended")
+                .containsPattern("-final\\.png \\(1280x720, t=[0-9.]+ s, 5 agents");
         BufferedImage first = ImageIO.read(shots.resolve("t0000.00.png").toFile());
         assertThat(first.getWidth()).isEqualTo(1280);
         assertThat(first.getHeight()).isEqualTo(720);

@@ -31,7 +31,8 @@ import javax.imageio.ImageIO;
  * images; with a live server the shot waits for the server's clock.
  *
  * <p>When the last shot is written the run finishes. A live game that ends first has its
- * remaining shots taken of its final state.
+ * remaining listed shots taken of its final state; with a shot every so many seconds, it gets one
+ * more, of its final state ({@link ShotPlan#finalShot}).
  */
 public final class ScreenshotState extends BaseAppState {
 
@@ -44,6 +45,7 @@ public final class ScreenshotState extends BaseAppState {
     private ByteBuffer pixels;
     private Shot armed;
     private boolean done;
+    private boolean finalShotTaken;
     private final Capture capture = new Capture();
     private int width;
     private int height;
@@ -96,13 +98,19 @@ public final class ScreenshotState extends BaseAppState {
         if (replay != null) {
             replay.advanceTo(next.time());
         } else if (over && plan.isPeriodic() && clock.now() < next.time()) {
-            finish(); // the game ended before this shot's time: nothing more will happen
-            return;
+            // The game ended before this shot's time: nothing more will happen but the final
+            // picture, which is what a teacher shows at the end of a match.
+            if (finalShotTaken) {
+                finish();
+                return;
+            }
+            next = plan.finalShot(clock.now());
         }
         AgentsState agents = getState(AgentsState.class);
         boolean settled = agents == null || agents.isSettled();
         if (settled && (clock.now() >= next.time() - 1e-9 || (replay == null && over))) {
             armed = next;
+            finalShotTaken |= over && replay == null && plan.isPeriodic();
         }
     }
 

@@ -9,7 +9,7 @@ import java.util.Locale;
 /**
  * Which screenshots a headless run takes: a list of (time, file), or one every so many simulated
  * seconds into a folder, named after their time ({@code t0012.50.png}), until a given time or the
- * end of the game.
+ * end of the game; a game that ends between two shots gets one more of its final state.
  */
 public final class ShotPlan {
 
@@ -61,6 +61,17 @@ public final class ShotPlan {
             return null;
         }
         return new Shot(time, folder.resolve(String.format(Locale.ROOT, "t%07.2f.png", time)));
+    }
+
+    /**
+     * The shot of a live game's final state, when the game ends before the next periodic shot:
+     * named after the time it ended, {@code t0012.50-final.png}, so that it sorts after the others.
+     */
+    Shot finalShot(double time) {
+        if (fixed != null) {
+            throw new IllegalStateException("a list of shots has no final shot");
+        }
+        return new Shot(time, folder.resolve(String.format(Locale.ROOT, "t%07.2f-final.png", time)));
     }
 
     /** Marks the next shot as taken. */

@@ -152,6 +152,14 @@ public final class WorldMirror {
         } else if (message instanceof FruitRemovedMessage removed) {
             removeFruit(removed);
         } else if (message instanceof AgentRemovedMessage removed) {
+            if (over != null) {
+                // The game is over and its clients go home: the scene keeps the final state, where
+                // every agent stood when the game ended, for the last picture and the prize-giving.
+                if (agents.containsKey(removed.agent())) {
+                    note(LogLine.Kind.EVENT, removed.agent() + " left (" + removed.reason() + ")");
+                }
+                return;
+            }
             AgentView agent = agents.remove(removed.agent());
             if (agent != null) {
                 note(LogLine.Kind.EVENT, removed.agent() + " left (" + removed.reason() + ")");

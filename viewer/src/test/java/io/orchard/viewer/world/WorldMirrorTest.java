@@ -179,6 +179,24 @@ class WorldMirrorTest {
     }
 
     @Test
+    void agentsThatLeaveBeforeTheEndGoButThoseLeavingAfterItStayInTheFinalPicture() {
+        WorldMirror mirror = new WorldMirror();
+        Heard heard = new Heard();
+        mirror.addListener(heard);
+        mirror.apply(snapshot(0));
+        mirror.apply(added("Guppy", new Vec3(1, 0, 1), 0));
+        mirror.apply(added("Bunny", new Vec3(2, 0, 2), 0));
+
+        mirror.apply(new AgentRemovedMessage(4, "Bunny", "disconnected"));
+        mirror.apply(new GameOverMessage(9, "time limit reached", List.of(new Score("Guppy", 3, 1))));
+        mirror.apply(new AgentRemovedMessage(9, "Guppy", "disconnected"));
+
+        assertThat(mirror.agents()).extracting(AgentView::name).containsExactly("Guppy");
+        assertThat(heard.events).contains("removed Bunny").doesNotContain("removed Guppy");
+        assertThat(mirror.log()).extracting(LogLine::text).contains("Guppy left (disconnected)");
+    }
+
+    @Test
     void messagesAboutUnknownAgentsChangeNothing() {
         WorldMirror mirror = new WorldMirror();
         Heard heard = new Heard();
