@@ -34,7 +34,6 @@ import java.security.MessageDigest;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.HexFormat;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -239,17 +238,7 @@ public final class Simulation implements Inbox {
     }
 
     private void apply(List<Event> events) {
-        // Client by client, each client's events in the order it sent them. Clients that control an
-        // agent go in the order of their agents' names, not of their connections, so that a lockstep
-        // game of the same seed plays out the same however the clients' threads raced to connect.
-        Map<Long, String> firstAgent = new HashMap<>();
-        for (Agent agent : agents.values()) {
-            firstAgent.putIfAbsent(agent.owner.id(), agent.name);
-        }
-        events.sort(Comparator.comparing((Event e) -> e.session() == null ? "" : firstAgent.getOrDefault(
-                e.session().id(), ""))
-                .thenComparingLong(e -> e.session() == null ? -1 : e.session().id()));
-        for (Event event : events) {
+        for (Event event : inClientOrder(events)) {
             if (event instanceof Event.Task task) {
                 task.action().run();
             } else if (event instanceof Event.Connected connected) {
@@ -576,6 +565,38 @@ public final class Simulation implements Inbox {
         for (ClientSession session : to.values()) {
             session.send(line);
         }
+    }
+
+    /**
+     * Client by client, each client's events in the order it sent them: first the server's own
+     * tasks and the clients without an agent, in the order they connected; then the clients of
+     * agents, in the order of their agents' names rather than of their connections, so that a
+     * lockstep game of a seed plays out the same however the clients' threads raced to connect.
+     */
+    private List<Event> inClientOrder(List<Event> events) {
+        Map<Long, List<Event>> bySession = new HashMap<>();
+        for (Event event : events) {
+            bySession.computeIfAbsent(event.session() == null ? -1L : event.session().id(),
+                    id -> new ArrayList<>(2)).add(event);
+        }
+        if (bySession.size() < 2) {
+            return events;
+        }
+        List<Event> named = new ArrayList<>(events.size());
+        for (Agent agent : agents.values()) { // by name
+            List<Event> own = bySession.remove(agent.owner.id());
+            if (own != null) {
+                named.addAll(own);
+            }
+        }
+        List<Long> unnamed = new ArrayList<>(bySession.keySet());
+        unnamed.sort(null);
+        List<Event> ordered = new ArrayList<>(events.size());
+        for (Long id : unnamed) {
+            ordered.addAll(bySession.get(id));
+        }
+        ordered.addAll(named);
+        return ordered;
     }
 
     private void flushAll() {

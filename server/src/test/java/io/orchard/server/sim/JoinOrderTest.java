@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.RegisterMessage;
+import io.orchard.protocol.message.SayMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.world.WorldGenerator;
@@ -61,5 +62,27 @@ class JoinOrderTest {
         sim.applyNow();
 
         assertThat(sim.agentNames()).containsExactly("Bunny", "Dwarf", "Guppy", "Roadrunner", "Robot");
+    }
+
+    @Test
+    void whatClientsSayInOneTickIsAppliedInTheOrderOfTheirAgentsNames() {
+        Simulation sim = new Simulation(WorldGenerator.standard(7).generate(), new SimulationConfig(20,
+                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 7, "test",
+                Recorder.NONE, List.of());
+        FakeSession viewer = new FakeSession(1, Role.VIEWER);
+        sim.connected(viewer);
+        FakeSession zed = new FakeSession(10, Role.AGENT); // connects first
+        FakeSession amy = new FakeSession(11, Role.AGENT);
+        sim.connected(zed);
+        sim.connected(amy);
+        sim.received(zed, new RegisterMessage(1, "Zed", TestWorlds.BODY, null));
+        sim.received(amy, new RegisterMessage(1, "Amy", TestWorlds.BODY, null));
+        sim.applyNow();
+
+        sim.received(zed, new SayMessage(2, "Zed", "first to speak"));
+        sim.received(amy, new SayMessage(2, "Amy", "second to speak"));
+        sim.applyNow();
+
+        assertThat(viewer.all(SayMessage.class)).extracting(SayMessage::agent).containsExactly("Amy", "Zed");
     }
 }
