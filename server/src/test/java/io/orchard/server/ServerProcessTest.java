@@ -99,7 +99,7 @@ class ServerProcessTest {
         Checkpoint.SavedAgent guppy = new Checkpoint.SavedAgent("Guppy", BODY, null, Vec3.ground(0, 4), Math.PI,
                 List.of(), List.of(), TOKEN);
         Checkpoint start = new Checkpoint(Checkpoint.FORMAT, 11, 50, ClockMode.REALTIME, 600, 0, "running", 10, 0.2,
-                4, 42, TestWorlds.small().toScenario(), List.of(guppy), List.of(new Score("Guppy", 0, 0)));
+                4, TestWorlds.small().toScenario(), List.of(guppy), List.of(new Score("Guppy", 0, 0)));
         Path file = dir.resolve("start.json");
         CheckpointFile.write(start, file);
         return file;

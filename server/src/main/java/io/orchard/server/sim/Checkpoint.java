@@ -15,8 +15,9 @@ import java.util.Locale;
 /**
  * A whole game at the end of one tick, enough to start it again where it was: the world with the
  * fruit still there, the agents (their bodies, places, headings, what their controllers
- * registered and their resume tokens), the scores, the clock, the seed and the state of the
- * random generator. Written by {@link CheckpointFile}; a server resumes from it.
+ * registered and their resume tokens), the scores, the clock and the seed. The game draws nothing
+ * at random but from the seed and the agents' names (where an agent starts), so there is no
+ * generator's state to keep. Written by {@link CheckpointFile}; a server resumes from it.
  *
  * @param format       the file format, {@link #FORMAT}
  * @param seed         the seed the game was made from
@@ -28,9 +29,8 @@ import java.util.Locale;
  * @param tick         the next tick to run
  * @param time         simulated seconds since the start
  * @param fruitAtStart fruit in the world when the game started
- * @param random       the state of the game's random generator
  * @param world        the world, with the fruit still there
- * @param agents       the agents in the world and those waiting to be resumed, in the order they joined
+ * @param agents       the agents waiting to be resumed, then those in the world by name
  * @param scores       every agent's score, best first
  */
 public record Checkpoint(int format,
@@ -43,13 +43,12 @@ public record Checkpoint(int format,
                          long tick,
                          double time,
                          int fruitAtStart,
-                         long random,
                          Scenario world,
                          List<SavedAgent> agents,
                          List<Score> scores) {
 
     /** The format this server writes and reads. */
-    public static final int FORMAT = 1;
+    public static final int FORMAT = 2;
 
     public Checkpoint {
         if (format != FORMAT) {

@@ -76,7 +76,6 @@ public final class Simulation implements Inbox {
     /** Immutable and costly to build: one for every simulation. */
     private static final MessageCodec CODEC = new MessageCodec();
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
-    private final GameRandom random;
     private final SecureRandom secrets = new SecureRandom();
     private final Placement placement;
     private final Actions actions;
@@ -120,7 +119,6 @@ public final class Simulation implements Inbox {
         this.serverVersion = serverVersion;
         this.recorder = recorder;
         this.listeners = List.copyOf(listeners);
-        this.random = new GameRandom(seed ^ 0x5DEECE66DL);
         this.placement = placement;
         this.walking = new Walking(this);
         this.actions = new Actions(this, world, walking);
@@ -642,7 +640,7 @@ public final class Simulation implements Inbox {
         agents.values().forEach(agent -> saved.add(saved(agent)));
         return new Checkpoint(Checkpoint.FORMAT, seed, config.tickRate(), config.clock(), config.timeLimit(),
                 config.waitFor(), phase.name().toLowerCase(java.util.Locale.ROOT), tick, time, fruitAtStart,
-                random.state(), world.toScenario(), saved, scores.ranking());
+                world.toScenario(), saved, scores.ranking());
     }
 
     private static Checkpoint.SavedAgent saved(Agent agent) {
@@ -651,7 +649,7 @@ public final class Simulation implements Inbox {
     }
 
     /**
-     * Continues a saved game: its clock, scores, random generator and phase; its agents wait, out of
+     * Continues a saved game: its clock, scores and phase; its agents wait, out of
      * the world, until their controllers register them again with their tokens. A running game
      * comes back paused and continues when every agent is back. Call before the simulation's thread
      * starts, on a simulation made from the checkpoint's world, seed and settings.
@@ -664,7 +662,6 @@ public final class Simulation implements Inbox {
         tick = checkpoint.tick();
         time = checkpoint.time();
         fruitAtStart = checkpoint.fruitAtStart();
-        random.restore(checkpoint.random());
         checkpoint.scores().forEach(scores::restore);
         for (Checkpoint.SavedAgent agent : checkpoint.agents()) {
             waiting.put(agent.name(), agent);

@@ -226,7 +226,7 @@ final class ServerUnderFuzz {
     private static Checkpoint withoutTokens(Checkpoint checkpoint) {
         return new Checkpoint(checkpoint.format(), checkpoint.seed(), checkpoint.tickRate(), checkpoint.clock(),
                 checkpoint.timeLimit(), checkpoint.waitFor(), checkpoint.phase(), checkpoint.tick(), checkpoint.time(),
-                checkpoint.fruitAtStart(), checkpoint.random(), checkpoint.world(), checkpoint.agents().stream()
+                checkpoint.fruitAtStart(), checkpoint.world(), checkpoint.agents().stream()
                 .map(a -> new Checkpoint.SavedAgent(a.name(), a.body(), a.model(), a.position(), a.heading(),
                         a.joints(), a.timeSensors(), "-")).toList(), checkpoint.scores());
     }

@@ -135,7 +135,6 @@ class CheckpointTest {
         Checkpoint after = again.checkpoint();
         assertThat(after.agents()).isEqualTo(before.agents());
         assertThat(after.world()).isEqualTo(before.world());
-        assertThat(after.random()).isEqualTo(before.random());
     }
 
     @Test
