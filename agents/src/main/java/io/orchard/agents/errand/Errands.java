@@ -260,14 +260,20 @@ public final class Errands {
             return new Crossing(kit, cross.landmark(), chosen);
         }
         if (step instanceof Head head) {
-            return Walking.on(kit, Turning.heading(head.direction()), head.direction().wireName());
+            double way = Turning.heading(head.direction());
+            if (head.distance() != null) {
+                return Walking.to(kit, Bearings.ahead(kit.here(), way, head.distance()), "Done: I went "
+                        + Restated.metres(head.distance()) + " " + head.direction().wireName() + ".");
+            }
+            return Walking.on(kit, way, head.direction().wireName());
         }
         if (step instanceof Move move) {
+            double far = move.distance() != null ? move.distance() : Walking.FEW_STEPS;
             return switch (move.direction()) {
-                case FORWARD -> Walking.steps(kit, heading, false);
-                case BACKWARD -> Walking.steps(kit, heading + Math.PI, true);
-                case LEFT -> Walking.steps(kit, heading + Math.PI / 2, false);
-                case RIGHT -> Walking.steps(kit, heading - Math.PI / 2, false);
+                case FORWARD -> Walking.steps(kit, heading, false, far);
+                case BACKWARD -> Walking.steps(kit, heading + Math.PI, true, far);
+                case LEFT -> Walking.steps(kit, heading + Math.PI / 2, false, far);
+                case RIGHT -> Walking.steps(kit, heading - Math.PI / 2, false, far);
             };
         }
         if (step instanceof ComeBack) {

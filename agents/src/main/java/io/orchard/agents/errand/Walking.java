@@ -39,9 +39,9 @@ final class Walking implements Pursuit {
         return new Walking(kit, point, Double.NaN, false, arrived);
     }
 
-    /** Walks a few steps in the direction of {@code heading}; backwards keeps facing the way it faces. */
-    static Walking steps(Kit kit, double heading, boolean backwards) {
-        Point2 end = Bearings.ahead(kit.here(), heading, FEW_STEPS);
+    /** Walks {@code distance} in the direction of {@code heading}; backwards keeps facing the way it faces. */
+    static Walking steps(Kit kit, double heading, boolean backwards, double distance) {
+        Point2 end = Bearings.ahead(kit.here(), heading, distance);
         return new Walking(kit, end, Double.NaN, backwards, "Done: I moved.");
     }
 

@@ -34,6 +34,10 @@ final class Answers {
     static final String WHAT_LOOK = "What should I look for? Say, for example, 'look for coconuts' or 'look "
             + "around'.";
     static final String WHAT_LOOK_AT = "What should I look at? Say, for example, 'look at the castle'.";
+    static final String WALK_RANGE = "I can walk more than 0 and up to " + (int) Move.MAX_DISTANCE
+            + " metres at a time; say, for example, 'go north 20 metres'.";
+    static final String DISTANCE_WHICH_WAY = "Which way should I walk that far: north, south, east, west, forward,"
+            + " back, left or right?";
     static final String WHICH_WAY = "Which way should I turn: left, right or around?";
     static final String TURN_RANGE = "I can turn by up to 360 degrees at a time; say, for example, 'turn 90 "
             + "degrees to the left'.";

@@ -49,9 +49,15 @@ public final class GoalJson {
         } else if (goal instanceof Head head) {
             node.put("goal", "head");
             node.put("direction", head.direction().wireName());
+            if (head.distance() != null) {
+                node.put("distance", head.distance());
+            }
         } else if (goal instanceof Move move) {
             node.put("goal", "move");
             node.put("direction", move.direction().wireName());
+            if (move.distance() != null) {
+                node.put("distance", move.distance());
+            }
         } else if (goal instanceof ComeBack) {
             node.put("goal", "come-back");
         } else if (goal instanceof Collect collect) {

@@ -1,18 +1,26 @@
 package io.orchard.agents.language;
 
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Sector;
 import java.util.Objects;
 
 /**
- * Walk in a compass direction: "go north", "head south-east", "walk towards the west". North is
- * {@code -z}, as in the protocol. There is no destination: the agent walks on in that direction
+ * Walk in a compass direction: "go north", "head south-east", "walk 20 metres to the west". North
+ * is {@code -z}, as in the protocol. Without a distance the agent walks on in that direction
  * (around obstacles) until the world's edge, the river without a bridge, or a new instruction.
  *
  * @param direction the compass direction to walk in
+ * @param distance  how far, in world units (a metre each), or null for as far as it goes
  */
-public record Head(Sector direction) implements Goal {
+public record Head(Sector direction, @Nullable Double distance) implements Goal {
 
     public Head {
         Objects.requireNonNull(direction, "direction");
+        Move.checkDistance(distance);
+    }
+
+    /** Walk on in a compass direction, as far as it goes. */
+    public Head(Sector direction) {
+        this(direction, null);
     }
 }

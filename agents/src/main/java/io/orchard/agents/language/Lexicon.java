@@ -369,6 +369,8 @@ final class Lexicon {
             words(Cat.SIDE, "ahead", "ahead");
             words(Cat.SIDE, "backward", "backward", "backwards", "backwardly");
             words(Cat.UNIT, "degree", "degree", "degrees", "deg", "degs");
+            // A world unit is a metre: "go north 20 metres", "walk 5 m to the left".
+            words(Cat.UNIT, "metre", "metre", "metres", "meter", "meters", "m", "unit", "units", "pace", "paces");
             words(Cat.UNIT, "second", "second", "seconds", "sec", "secs");
             words(Cat.UNIT, "minute", "minute", "minutes", "min", "mins");
             words(Cat.UNIT, "hour", "hour", "hours");

@@ -1,19 +1,37 @@
 package io.orchard.agents.language;
 
+import io.orchard.protocol.value.Nullable;
 import java.util.Locale;
 import java.util.Objects;
 
 /**
- * Walk a few steps relative to where the agent is facing: "go forward", "step back", "go left",
- * "move straight ahead". How far is up to the agent (a few body lengths); turning is not needed
- * for {@link Direction#BACKWARD}, which walks backwards.
+ * Walk relative to where the agent is facing: "go forward", "step back", "go left 5 metres",
+ * "move straight ahead". Without a distance how far is up to the agent (a few body lengths);
+ * turning is not needed for {@link Direction#BACKWARD}, which walks backwards.
  *
  * @param direction which way, relative to the agent's heading
+ * @param distance  how far, in world units (a metre each), or null for a few steps
  */
-public record Move(Direction direction) implements Goal {
+public record Move(Direction direction, @Nullable Double distance) implements Goal {
+
+    /** The longest walk one instruction may ask for: farther than across any world Orchard makes. */
+    public static final double MAX_DISTANCE = 1000;
 
     public Move {
         Objects.requireNonNull(direction, "direction");
+        checkDistance(distance);
+    }
+
+    /** Walk a few steps that way. */
+    public Move(Direction direction) {
+        this(direction, null);
+    }
+
+    static void checkDistance(Double distance) {
+        if (distance != null && !(distance > 0 && distance <= MAX_DISTANCE)) {
+            throw new IllegalArgumentException("distance must be more than 0 and at most " + (int) MAX_DISTANCE
+                    + " units, was " + distance);
+        }
     }
 
     /** A direction relative to the agent's heading. */

@@ -25,10 +25,10 @@ final class Notation {
             return "cross(" + of(cross.landmark()) + ")";
         }
         if (goal instanceof Head head) {
-            return "head(" + head.direction().wireName() + ")";
+            return "head(" + head.direction().wireName() + distance(head.distance()) + ")";
         }
         if (goal instanceof Move move) {
-            return "move(" + move.direction().wireName() + ")";
+            return "move(" + move.direction().wireName() + distance(move.distance()) + ")";
         }
         if (goal instanceof Collect collect) {
             String count = collect.isAll() ? "all " : collect.count() == 1 ? "" : collect.count() + " ";
@@ -95,5 +95,9 @@ final class Notation {
     /** A number without needless digits: 90, 22.5, 0.333333. */
     static String number(double value) {
         return BigDecimal.valueOf(value).setScale(6, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
+    }
+
+    private static String distance(Double distance) {
+        return distance == null ? "" : ", " + number(distance);
     }
 }

@@ -229,6 +229,13 @@ final class Parser {
             }
             throw Refusal.answer(Answers.WHERE);
         }
+        Double first = distance(c);
+        if (first != null) {
+            if (c.atEnd()) {
+                throw Refusal.answer(Answers.DISTANCE_WHICH_WAY);
+            }
+            return walked(go(c, come), first); // "walk 5 metres north"
+        }
         Lexeme t = c.peek();
         if (t.is(VERB)) {
             return command(c); // "go get the banana", "come see"
@@ -334,8 +341,38 @@ final class Parser {
         if (c.peekIs(PREP, "of")) {
             return new GoTo(Reference.place(phrases.compass(direction, c)));
         }
+        Double distance = distance(c);
         skipVagueAmount(c);
-        return new Head(NounPhrases.sector(direction));
+        return new Head(NounPhrases.sector(direction), distance);
+    }
+
+    /** "20 metres", "for 5 m": how far to walk, or null when the sentence does not say. */
+    private static Double distance(Cursor c) {
+        int at = c.peekIs(PREP, "for") ? 1 : 0;
+        Lexeme number = c.peekAt(at);
+        Lexeme unit = c.peekAt(at + 1);
+        if (number == null || !number.is(NUMBER) || unit == null || !unit.is(UNIT, "metre")) {
+            return null;
+        }
+        for (int i = 0; i <= at + 1; i++) {
+            c.next();
+        }
+        double distance = number.number();
+        if (!(distance > 0 && distance <= Move.MAX_DISTANCE)) {
+            throw Refusal.answer(Answers.WALK_RANGE);
+        }
+        return distance;
+    }
+
+    /** A walk whose distance came before its direction: "walk 5 metres north", "go 3 m to the left". */
+    private static Goal walked(Goal goal, double distance) {
+        if (goal instanceof Head head && head.distance() == null) {
+            return new Head(head.direction(), distance);
+        }
+        if (goal instanceof Move move && move.distance() == null) {
+            return new Move(move.direction(), distance);
+        }
+        throw Refusal.answer(Answers.DISTANCE_WHICH_WAY);
     }
 
     /** "for a bit", "for a while", "a little": how far to walk is the agent's to choose. */
@@ -607,12 +644,13 @@ final class Parser {
         while (c.peek() != null && c.peek().is(SIDE)) {
             c.next(); // "straight ahead"
         }
+        Double distance = walk ? distance(c) : null;
         skipVagueAmount(c);
         return switch (t.lemma()) {
-            case "left" -> walk ? new Move(Move.Direction.LEFT) : Turn.left();
-            case "right" -> walk ? new Move(Move.Direction.RIGHT) : Turn.right();
-            case "backward" -> new Move(Move.Direction.BACKWARD);
-            default -> new Move(Move.Direction.FORWARD);
+            case "left" -> walk ? new Move(Move.Direction.LEFT, distance) : Turn.left();
+            case "right" -> walk ? new Move(Move.Direction.RIGHT, distance) : Turn.right();
+            case "backward" -> new Move(Move.Direction.BACKWARD, distance);
+            default -> new Move(Move.Direction.FORWARD, distance);
         };
     }
 

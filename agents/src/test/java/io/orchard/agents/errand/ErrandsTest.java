@@ -97,6 +97,25 @@ class ErrandsTest {
     }
 
     @Test
+    void aWalkWithADistanceEndsThatFarAwayInThatDirection() {
+        Recorder motor = new Recorder(HANDS);
+        Errands errands = errands(motor);
+        errands.take(goal("walk 10 metres to the east"));
+
+        assertThat(motor.said).singleElement().isEqualTo("Going 10 metres east.");
+        for (int tick = 0; tick < 100 && errands.step(); tick++) {
+            if (motor.walking) { // arrives at once where it was sent
+                motor.position = motor.moves.get(motor.moves.size() - 1);
+                motor.walking = false;
+            }
+            motor.time += 0.05;
+        }
+
+        assertThat(motor.said).last().isEqualTo("Done: I went 10 metres east. Carrying on by myself.");
+        assertThat(motor.position.distance(new Point2(10, 0))).as("ended at %s", motor.position).isLessThan(1);
+    }
+
+    @Test
     void aNewInstructionCancelsTheQuestion() {
         Recorder motor = new Recorder(HANDS);
         Errands errands = errands(motor);

@@ -61,6 +61,16 @@ class GoalTest {
     }
 
     @Test
+    void aWalkIsMoreThanNothingAndAtMostAThousandMetres() {
+        assertThat(new Head(io.orchard.protocol.value.Sector.NORTH).distance()).isNull();
+        assertThat(new Move(Move.Direction.LEFT, 2.5).distance()).isEqualTo(2.5);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new Head(io.orchard.protocol.value.Sector.NORTH, 0.0))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("was 0.0");
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new Move(Move.Direction.FORWARD, 1000.5))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("at most 1000");
+    }
+
+    @Test
     void turnsArePositiveToTheLeft() {
         assertThat(Turn.left().degrees()).isEqualTo(90, org.assertj.core.data.Offset.offset(1e-9));
         assertThat(Turn.right().radians()).isNegative();
