@@ -49,7 +49,11 @@ final class ViewerProcess {
 
     /** Runs {@code ViewerMain} with these arguments in {@code dir} and waits for it, at most 90 s. */
     static Result run(Path dir, String... args) throws IOException, InterruptedException {
+        // xvfb-run answers with its own status when it fails to clean up after the viewer (5, on a busy
+        // machine now and then): the viewer's own status is kept in a file and read from there.
+        Path status = Files.createTempFile(dir, "viewer-exit", ".txt");
         List<String> command = new ArrayList<>(List.of(xvfbRun().toString(), "-a", "-s", "-screen 0 1280x720x24",
+                "sh", "-c", "\"$@\"; s=$?; echo $s > \"$0\"; exit $s", status.toString(),
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx512m",
                 "-cp", classPath(), ViewerMain.class.getName()));
         command.addAll(List.of(args));
@@ -70,7 +74,9 @@ final class ViewerProcess {
                     + output.toString(StandardCharsets.UTF_8));
         }
         reader.join(5000);
-        return new Result(process.exitValue(), output.toString(StandardCharsets.UTF_8));
+        String saved = Files.readString(status).strip();
+        return new Result(saved.isEmpty() ? process.exitValue() : Integer.parseInt(saved),
+                output.toString(StandardCharsets.UTF_8));
     }
 
     private static String classPath() {

@@ -28,10 +28,13 @@ final class HeadlessViewer implements ViewerRun {
 
     private final Process process;
     private final CountDownLatch firstShot = new CountDownLatch(1);
+    /** Where the viewer's own exit status is written under xvfb-run; null without it. */
+    private final Path status;
     private final Thread pump;
 
-    private HeadlessViewer(Process process, PrintStream out) {
+    private HeadlessViewer(Process process, Path status, PrintStream out) {
         this.process = process;
+        this.status = status;
         this.pump = new Thread(() -> pass(out), "orchard-demo-viewer-output");
         pump.setDaemon(true);
         pump.start();
@@ -46,8 +49,14 @@ final class HeadlessViewer implements ViewerRun {
     static HeadlessViewer start(int port, Path out, double every, Path xvfbRun, double timeout, PrintStream lines)
             throws IOException {
         List<String> command = new ArrayList<>();
+        Path status = null;
         if (xvfbRun != null) {
-            command.addAll(List.of(xvfbRun.toString(), "-a", "-s", SCREEN));
+            // xvfb-run answers with its own status when it fails to clean up after the viewer (5, on a
+            // busy machine now and then): the viewer's own status is kept in a file and read from there.
+            status = Files.createTempFile("orchard-viewer-exit", ".txt");
+            status.toFile().deleteOnExit();
+            command.addAll(List.of(xvfbRun.toString(), "-a", "-s", SCREEN, "sh", "-c",
+                    "\"$@\"; s=$?; echo $s > \"$0\"; exit $s", status.toString()));
         }
         command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx512m",
                 "-cp", classPath(), ViewerMain.class.getName(), "--host", "127.0.0.1", "--port", String.valueOf(port),
@@ -67,7 +76,7 @@ final class HeadlessViewer implements ViewerRun {
             process.descendants().forEach(ProcessHandle::destroy);
             process.destroy();
         }, "orchard-demo-viewer-stop"));
-        return new HeadlessViewer(process, lines);
+        return new HeadlessViewer(process, status, lines);
     }
 
     @Override
@@ -88,6 +97,16 @@ final class HeadlessViewer implements ViewerRun {
             return null;
         }
         pump.join(2000); // its last lines
+        if (status != null) {
+            try {
+                String saved = Files.readString(status).strip();
+                if (!saved.isEmpty()) {
+                    return Integer.parseInt(saved);
+                }
+            } catch (IOException | NumberFormatException e) {
+                // fall back on what xvfb-run said
+            }
+        }
         return process.exitValue();
     }
 
