@@ -18,11 +18,14 @@ class JoinOrderTest {
 
     private static final List<String> NAMES = List.of("Dwarf", "Robot", "Bunny", "Guppy", "Roadrunner");
 
+    private static Simulation simulation(long seed) {
+        return new Simulation(WorldGenerator.standard(seed).generate(), new SimulationConfig(20, ClockMode.LOCKSTEP,
+                30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), seed, "test", Recorder.NONE, List.of());
+    }
+
     /** Each agent's AgentAdded line, as a viewer sees it, after the agents joined in {@code order}. */
     private static List<String> join(List<String> order) {
-        Simulation sim = new Simulation(WorldGenerator.standard(1998).generate(), new SimulationConfig(20,
-                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 1998, "test",
-                Recorder.NONE, List.of());
+        Simulation sim = simulation(1998);
         FakeSession viewer = new FakeSession(1, Role.VIEWER);
         sim.connected(viewer);
         long id = 10;
@@ -50,9 +53,7 @@ class JoinOrderTest {
 
     @Test
     void agentsAreListedByName() {
-        Simulation sim = new Simulation(WorldGenerator.standard(7).generate(), new SimulationConfig(20,
-                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 7, "test",
-                Recorder.NONE, List.of());
+        Simulation sim = simulation(7);
         long id = 10;
         for (String name : NAMES) {
             FakeSession client = new FakeSession(id++, Role.AGENT);
@@ -66,9 +67,7 @@ class JoinOrderTest {
 
     @Test
     void whatClientsSayInOneTickIsAppliedInTheOrderOfTheirAgentsNames() {
-        Simulation sim = new Simulation(WorldGenerator.standard(7).generate(), new SimulationConfig(20,
-                ClockMode.LOCKSTEP, 30, 0, Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 7, "test",
-                Recorder.NONE, List.of());
+        Simulation sim = simulation(7);
         FakeSession viewer = new FakeSession(1, Role.VIEWER);
         sim.connected(viewer);
         FakeSession zed = new FakeSession(10, Role.AGENT); // connects first
