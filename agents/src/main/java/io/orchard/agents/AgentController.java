@@ -4,6 +4,7 @@ import io.orchard.agents.behaviour.Forager;
 import io.orchard.agents.behaviour.GraspStatus;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.MoveStatus;
+import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
@@ -157,6 +158,7 @@ public abstract class AgentController {
     private long posedTick = -1;
     private GraspStatus lastGrasp;
     private long lastGraspSeq = -1;
+    private PathPlanner planner;
     private Forager forager;
     private Errands errands;
     private InstructionInterpreter interpreter;
@@ -443,12 +445,23 @@ public abstract class AgentController {
     }
 
     /**
+     * The agent's path planner over its memory, made on first use once the agent is in the world.
+     * One per agent: its map of the ground is kept up to date once, for every behaviour that plans.
+     */
+    protected final PathPlanner planner() {
+        if (planner == null) {
+            planner = new PathPlanner(memory);
+        }
+        return planner;
+    }
+
+    /**
      * The default autonomy ({@link Forager}), made on first use; its harvester plays the body's
      * grasp animation with each grasp.
      */
     protected final Forager forager() {
         if (forager == null) {
-            forager = new Forager(memory, motor, random);
+            forager = new Forager(memory, motor, planner(), random);
             String graspAnimation = plan.graspAnimation();
             if (graspAnimation != null) {
                 forager.harvester().gesture(fruit -> play(graspAnimation, GRASP_SECONDS));
@@ -464,7 +477,7 @@ public abstract class AgentController {
      */
     protected final Errands errands() {
         if (errands == null) {
-            errands = new Errands(memory, motor);
+            errands = new Errands(memory, motor, planner());
             String graspAnimation = plan.graspAnimation();
             if (graspAnimation != null) {
                 errands.harvester().gesture(fruit -> play(graspAnimation, GRASP_SECONDS));

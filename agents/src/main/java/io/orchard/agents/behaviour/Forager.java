@@ -33,9 +33,14 @@ public final class Forager {
 
     /** A forager for the agent {@code motor} drives, drawing its random choices from {@code random}. */
     public Forager(WorldMemory memory, Motor motor, RandomGenerator random) {
+        this(memory, motor, new PathPlanner(memory), random);
+    }
+
+    /** A forager that plans its ways with the agent's own {@code planner}, shared with its other behaviours. */
+    public Forager(WorldMemory memory, Motor motor, PathPlanner planner, RandomGenerator random) {
         this.memory = memory;
         this.motor = motor;
-        this.planner = new PathPlanner(memory);
+        this.planner = planner;
         this.navigator = new Navigator(memory, motor, planner);
         this.harvester = new Harvester(memory, motor, navigator);
         this.explorer = new Explorer(memory, planner);

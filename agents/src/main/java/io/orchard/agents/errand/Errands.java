@@ -2,6 +2,7 @@ package io.orchard.agents.errand;
 
 import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Motor;
+import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.language.CarryOn;
 import io.orchard.agents.language.Collect;
@@ -71,7 +72,12 @@ public final class Errands {
 
     /** Errands for the agent {@code motor} drives and {@code memory} remembers for. */
     public Errands(WorldMemory memory, Motor motor) {
-        this.kit = new Kit(memory, motor);
+        this(memory, motor, new PathPlanner(memory));
+    }
+
+    /** Errands that plan their ways with the agent's own {@code planner}, shared with its other behaviours. */
+    public Errands(WorldMemory memory, Motor motor, PathPlanner planner) {
+        this.kit = new Kit(memory, motor, planner);
         this.origin = memory.position();
         this.previousOrigin = origin;
     }
@@ -263,7 +269,7 @@ public final class Errands {
             double way = Turning.heading(head.direction());
             if (head.distance() != null) {
                 return Walking.to(kit, Bearings.ahead(kit.here(), way, head.distance()), "Done: I went "
-                        + Restated.metres(head.distance()) + " " + head.direction().wireName() + ".");
+                        + Move.metres(head.distance()) + " " + head.direction().wireName() + ".");
             }
             return Walking.on(kit, way, head.direction().wireName());
         }

@@ -21,10 +21,10 @@ final class Kit {
     final Explorer explorer;
     final Grounder grounder;
 
-    Kit(WorldMemory memory, Motor motor) {
+    Kit(WorldMemory memory, Motor motor, PathPlanner planner) {
         this.memory = memory;
         this.motor = motor;
-        this.planner = new PathPlanner(memory);
+        this.planner = planner;
         this.navigator = new Navigator(memory, motor, planner);
         this.harvester = new Harvester(memory, motor, navigator);
         this.explorer = new Explorer(memory, planner);

@@ -26,11 +26,4 @@ final class Restated {
             default -> "the " + known.kind().wireName() + " " + known.id();
         };
     }
-
-    /** "1 metre", "20 metres", "2.5 metres", as the instruction said it. */
-    static String metres(double distance) {
-        String number = distance == Math.rint(distance) ? Long.toString((long) distance)
-                : java.math.BigDecimal.valueOf(distance).stripTrailingZeros().toPlainString();
-        return number + (number.equals("1") ? " metre" : " metres");
-    }
 }

@@ -27,6 +27,12 @@ public record Move(Direction direction, @Nullable Double distance) implements Go
         this(direction, null);
     }
 
+    /** How a distance reads in the agent's answers: "1 metre", "20 metres", "2.5 metres". */
+    public static String metres(double distance) {
+        String number = Notation.number(distance);
+        return number + (number.equals("1") ? " metre" : " metres");
+    }
+
     static void checkDistance(Double distance) {
         if (distance != null && !(distance > 0 && distance <= MAX_DISTANCE)) {
             throw new IllegalArgumentException("distance must be more than 0 and at most " + (int) MAX_DISTANCE

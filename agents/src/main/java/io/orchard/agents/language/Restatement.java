@@ -52,11 +52,11 @@ final class Restatement {
         }
         if (goal instanceof Head head) {
             return head.distance() == null ? "heading " + head.direction().wireName()
-                    : "going " + units(head.distance()) + " " + head.direction().wireName();
+                    : "going " + Move.metres(head.distance()) + " " + head.direction().wireName();
         }
         if (goal instanceof Move move) {
             if (move.distance() != null) {
-                String how = units(move.distance());
+                String how = Move.metres(move.distance());
                 return switch (move.direction()) {
                     case FORWARD -> "going " + how + " forward";
                     case BACKWARD -> "stepping " + how + " back";
@@ -252,11 +252,5 @@ final class Restatement {
             return minutes + (minutes == 1 ? " minute" : " minutes");
         }
         return Notation.number(seconds) + (seconds == 1 ? " second" : " seconds");
-    }
-
-    /** "1 metre", "2.5 metres": world units are metres to the people who speak to agents. */
-    static String units(double distance) {
-        String number = Notation.number(distance);
-        return number + (number.equals("1") ? " metre" : " metres");
     }
 }

@@ -75,8 +75,7 @@ public final class Dwarf extends AgentController {
                 .gripper("hands", 0.6, 0, 1.6)
                 .sight(40, Math.toRadians(200))
                 .model("models/Dwarf.x3d", "Dwarf")
-                .joints("Neck", "LeftShoulder", "LeftElbow", "RightShoulder", "RightElbow",
-                        "LeftHip", "LeftKnee", "RightHip", "RightKnee")
+                .joints(Pose.figureJoints())
                 .walkAnimation(name() + "TSWalk")
                 .graspAnimation(name() + "TSGrasp")
                 .build();
@@ -84,7 +83,7 @@ public final class Dwarf extends AgentController {
 
     @Override
     protected void onRegistered() {
-        skills = new Skills(memory(), motor(), random());
+        skills = new Skills(memory(), motor(), planner(), random());
         pose = new Pose(motor());
         skills.harvester.gesture(pose.armsReach(0.45, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
                 ARM_LENGTH, raised -> raised.set("Neck", 0.3)));

@@ -67,8 +67,7 @@ public final class Guppy extends AgentController {
                 .gripper("hands", 0.7, 0, 2.3)
                 .sight(45, Math.toRadians(210))
                 .model("models/Guppy.wrl", "Guppy")
-                .joints("Neck", "LeftShoulder", "LeftElbow", "RightShoulder", "RightElbow",
-                        "LeftHip", "LeftKnee", "RightHip", "RightKnee")
+                .joints(Pose.figureJoints())
                 .walkAnimation(name() + "TSWalk")
                 .graspAnimation(name() + "TSGrasp")
                 .build();
@@ -76,7 +75,7 @@ public final class Guppy extends AgentController {
 
     @Override
     protected void onRegistered() {
-        skills = new Skills(memory(), motor(), random());
+        skills = new Skills(memory(), motor(), planner(), random());
         pose = new Pose(motor());
         skills.harvester.gesture(pose.armsReach(0.6, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
                 ARM_LENGTH, raised -> raised.set("Neck", 0.4)));

@@ -18,6 +18,12 @@ final class Pose {
     private final Map<String, Double> held = new LinkedHashMap<>();
     private double releaseAt = Double.POSITIVE_INFINITY;
 
+    /** The joints of the zoo's two-armed, two-legged figures (the Dwarf's and Guppy's models), which gestures turn. */
+    static String[] figureJoints() {
+        return new String[] {"Neck", "LeftShoulder", "LeftElbow", "RightShoulder", "RightElbow", "LeftHip", "LeftKnee",
+            "RightHip", "RightKnee"};
+    }
+
     Pose(Motor motor) {
         this.motor = motor;
     }

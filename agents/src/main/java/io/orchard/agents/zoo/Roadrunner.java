@@ -145,7 +145,7 @@ public final class Roadrunner extends AgentController {
 
     @Override
     protected void onRegistered() {
-        skills = new Skills(memory(), motor(), random());
+        skills = new Skills(memory(), motor(), planner(), random());
         skills.navigator.faceBeyond(Math.toRadians(100));
         pose = new Pose(motor());
         skills.harvester.gesture(new Harvester.Gesture() {

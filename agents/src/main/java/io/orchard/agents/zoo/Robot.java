@@ -89,7 +89,7 @@ public final class Robot extends AgentController {
 
     @Override
     protected void onRegistered() {
-        skills = new Skills(memory(), motor(), random());
+        skills = new Skills(memory(), motor(), planner(), random());
         pose = new Pose(motor());
         skills.harvester.gesture(pose.armsReach(0.6, () -> play(name() + "TSGrasp", 1.5), SHOULDER_HEIGHT,
                 ARM_LENGTH, raised -> claws(false)));

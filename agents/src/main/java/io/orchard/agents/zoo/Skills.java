@@ -21,10 +21,10 @@ final class Skills {
     final Explorer explorer;
     final Wanderer wanderer;
 
-    Skills(WorldMemory memory, Motor motor, RandomGenerator random) {
+    Skills(WorldMemory memory, Motor motor, PathPlanner planner, RandomGenerator random) {
         this.memory = memory;
         this.motor = motor;
-        this.planner = new PathPlanner(memory);
+        this.planner = planner;
         this.navigator = new Navigator(memory, motor, planner);
         this.harvester = new Harvester(memory, motor, navigator);
         this.explorer = new Explorer(memory, planner);
