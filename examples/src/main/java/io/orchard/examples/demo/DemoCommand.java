@@ -1,6 +1,6 @@
 package io.orchard.examples.demo;
 
-import io.orchard.examples.Command;
+import io.orchard.examples.OptionsCommand;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
 import io.orchard.protocol.cli.Options;
@@ -14,7 +14,7 @@ import java.util.Locale;
  * {@code ./orchard demo [--seed N] [--time-limit S] [--headless] [--out DIR]}: runs a {@link Demo},
  * a whole match of the paper's five agents with a viewer, and prints the ranking.
  */
-public final class DemoCommand implements Command {
+public final class DemoCommand extends OptionsCommand {
 
     /** Simulated seconds between the headless viewer's screenshots. */
     static final double EVERY = 10;
@@ -35,19 +35,9 @@ public final class DemoCommand implements Command {
         Orchard.runAndExit("demo", args);
     }
 
-    @Override
-    public String name() {
-        return "demo";
-    }
-
-    @Override
-    public String summary() {
-        return "run a whole match: a server, the five agents and the viewer, then the ranking";
-    }
-
-    @Override
-    public String help() {
-        return OPTIONS.help();
+    /** The {@code ./orchard demo} command. */
+    public DemoCommand() {
+        super("demo", "run a whole match: a server, the five agents and the viewer, then the ranking", OPTIONS);
     }
 
     @Override

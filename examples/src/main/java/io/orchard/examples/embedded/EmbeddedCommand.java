@@ -1,12 +1,12 @@
 package io.orchard.examples.embedded;
 
-import io.orchard.examples.Command;
+import io.orchard.examples.OptionsCommand;
 import io.orchard.protocol.cli.Options;
 import java.io.PrintStream;
 import java.util.List;
 
 /** {@code ./orchard embedded [--seed N] [--time-limit SECONDS]}: runs {@link EmbeddedGame}. */
-public final class EmbeddedCommand implements Command {
+public final class EmbeddedCommand extends OptionsCommand {
 
     private static final Options OPTIONS = new Options("orchard embedded",
             "Runs the embedding example (io.orchard.examples.embedded.EmbeddedGame): a world server in this JVM"
@@ -15,19 +15,10 @@ public final class EmbeddedCommand implements Command {
             .value("seed", "N", "seed of the world", "1998")
             .value("time-limit", "SECONDS", "length of the game in simulated seconds", "60");
 
-    @Override
-    public String name() {
-        return "embedded";
-    }
-
-    @Override
-    public String summary() {
-        return "run the embedding example: a server and two agents in one JVM, their events, the ranking";
-    }
-
-    @Override
-    public String help() {
-        return OPTIONS.help();
+    /** The {@code ./orchard embedded} command. */
+    public EmbeddedCommand() {
+        super("embedded", "run the embedding example: a server and two agents in one JVM, their events, the ranking",
+                OPTIONS);
     }
 
     @Override

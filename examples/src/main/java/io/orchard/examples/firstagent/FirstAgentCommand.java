@@ -1,6 +1,6 @@
 package io.orchard.examples.firstagent;
 
-import io.orchard.examples.Command;
+import io.orchard.examples.OptionsCommand;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Ranking;
 import io.orchard.protocol.cli.Options;
@@ -17,7 +17,7 @@ import java.util.List;
  * against a running server and prints the ranking when the game is over. The launcher rebuilds
  * the project first when a source changed, so an edit of {@code FirstAgent.java} is played at once.
  */
-public final class FirstAgentCommand implements Command {
+public final class FirstAgentCommand extends OptionsCommand {
 
     private static final Options OPTIONS = new Options("orchard first-agent",
             "Plays the tutorial's FirstAgent (examples/src/main/java/io/orchard/examples/firstagent/FirstAgent.java)"
@@ -33,19 +33,9 @@ public final class FirstAgentCommand implements Command {
         Orchard.runAndExit("first-agent", args);
     }
 
-    @Override
-    public String name() {
-        return "first-agent";
-    }
-
-    @Override
-    public String summary() {
-        return "play the tutorial's FirstAgent against a running server";
-    }
-
-    @Override
-    public String help() {
-        return OPTIONS.help();
+    /** The {@code ./orchard first-agent} command. */
+    public FirstAgentCommand() {
+        super("first-agent", "play the tutorial's FirstAgent against a running server", OPTIONS);
     }
 
     @Override

@@ -1,6 +1,6 @@
 package io.orchard.examples.tournament;
 
-import io.orchard.examples.Command;
+import io.orchard.examples.OptionsCommand;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
 import io.orchard.examples.match.Lineup;
@@ -15,7 +15,7 @@ import java.util.Locale;
  * plays a {@link Tournament}, showing its progress, then writes results.csv, results.json and
  * chart.png and prints the table of means.
  */
-public final class TournamentCommand implements Command {
+public final class TournamentCommand extends OptionsCommand {
 
     private static final Options OPTIONS = new Options("orchard tournament",
             "Plays K games on K seeds (N, N+1, ...) with the same agents, in lockstep, each agent on its own"
@@ -36,19 +36,10 @@ public final class TournamentCommand implements Command {
         Orchard.runAndExit("tournament", args);
     }
 
-    @Override
-    public String name() {
-        return "tournament";
-    }
-
-    @Override
-    public String summary() {
-        return "play K games over K seeds with chosen agents; results as CSV, JSON and a chart";
-    }
-
-    @Override
-    public String help() {
-        return OPTIONS.help();
+    /** The {@code ./orchard tournament} command. */
+    public TournamentCommand() {
+        super("tournament", "play K games over K seeds with chosen agents; results as CSV, JSON and a chart",
+                OPTIONS);
     }
 
     @Override
