@@ -26,7 +26,6 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
 /**
@@ -123,9 +122,9 @@ public final class Simulation implements Inbox {
 
     // ---- the tick thread ---------------------------------------------------------------------
 
-    /** Takes the next queued event, waiting up to {@code millis}; null when none came. */
-    Event poll(long millis) throws InterruptedException {
-        return inbox.poll(millis, TimeUnit.MILLISECONDS);
+    /** Takes the next queued event, waiting up to {@code millis} of the clock's time; null when none came. */
+    Event poll(LoopClock clock, long millis) throws InterruptedException {
+        return clock.poll(inbox, millis);
     }
 
     /** Moves every queued event into {@code into}. */
