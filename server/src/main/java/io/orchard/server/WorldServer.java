@@ -4,9 +4,6 @@ import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.net.NetLimits;
 import io.orchard.server.net.NetServer;
-import io.orchard.server.sim.Checkpoint;
-import io.orchard.server.sim.CheckpointFile;
-import io.orchard.server.sim.FileRecorder;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.Placement;
@@ -15,9 +12,6 @@ import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.sim.TickLoop;
 import io.orchard.server.sim.TickStats;
-import io.orchard.server.world.World;
-import io.orchard.server.world.WorldGenerator;
-import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
@@ -26,7 +20,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ThreadLocalRandom;
 
 /**
  * An Orchard world server that any JVM program can embed: it holds the world, runs the game and
@@ -58,8 +51,8 @@ public final class WorldServer implements AutoCloseable {
     private final CompletableFuture<List<Score>> gameOver;
     private final Checkpoints checkpoints;
 
-    private WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
-                        CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
+    WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
+                CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
         this.simulation = simulation;
         this.net = net;
         this.loop = loop;
@@ -204,23 +197,24 @@ public final class WorldServer implements AutoCloseable {
      */
     public static final class Builder {
 
-        private String bind = "127.0.0.1";
-        private int port = DEFAULT_PORT;
-        private Long seed;
-        private ClockMode clock = ClockMode.REALTIME;
-        private int tickRate = SimulationConfig.DEFAULT.tickRate();
-        private double timeLimit = SimulationConfig.DEFAULT.timeLimit();
-        private int waitFor;
-        private Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
-        private Path scenario;
-        private Path record;
-        private Path checkpointFile;
-        private Duration checkpointEvery;
-        private Path resume;
-        private String token;
-        private NetLimits limits = NetLimits.DEFAULT;
-        private Placement placement = (name, radius) -> null;
-        private final List<GameListener> listeners = new ArrayList<>();
+        // The settings, read by Startup when it puts the server together.
+        String bind = "127.0.0.1";
+        int port = DEFAULT_PORT;
+        Long seed;
+        ClockMode clock = ClockMode.REALTIME;
+        int tickRate = SimulationConfig.DEFAULT.tickRate();
+        double timeLimit = SimulationConfig.DEFAULT.timeLimit();
+        int waitFor;
+        Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
+        Path scenario;
+        Path record;
+        Path checkpointFile;
+        Duration checkpointEvery;
+        Path resume;
+        String token;
+        NetLimits limits = NetLimits.DEFAULT;
+        Placement placement = (name, radius) -> null;
+        final List<GameListener> listeners = new ArrayList<>();
 
         private Builder() {}
 
@@ -358,63 +352,7 @@ public final class WorldServer implements AutoCloseable {
          *                     port cannot be bound
          */
         public WorldServer start() throws IOException {
-            Checkpoint saved = resume != null ? CheckpointFile.read(resume) : null;
-            long actualSeed = saved != null ? saved.seed()
-                    : seed != null ? seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
-            World world = saved != null ? World.fromScenario(saved.world())
-                    : scenario != null ? World.fromScenario(ScenarioFile.read(scenario))
-                    : WorldGenerator.standard(actualSeed).generate();
-            SimulationConfig config = saved != null
-                    ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
-                            lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
-                            SimulationConfig.DEFAULT.bodyLimits())
-                    : new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
-                            SimulationConfig.DEFAULT.agentsPerSession(), SimulationConfig.DEFAULT.bodyLimits());
-            Recorder recorder = record != null ? FileRecorder.open(record, saved != null) : Recorder.NONE;
-            CompletableFuture<List<Score>> over = new CompletableFuture<>();
-            List<GameListener> all = new ArrayList<>(listeners);
-            all.add(new GameListener() {
-                @Override
-                public void gameOver(String reason, List<Score> ranking) {
-                    over.complete(ranking);
-                }
-            });
-            Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
-                    placement);
-            if (saved != null) {
-                simulation.restore(saved);
-                if (simulation.phase() == Phase.OVER) {
-                    over.complete(simulation.ranking());
-                }
-            }
-            Checkpoints checkpoints = new Checkpoints(checkpointFile);
-            if (checkpointFile != null) {
-                simulation.checkpointWhenScored(checkpoints::offer);
-            }
-            NetServer net;
-            try {
-                net = NetServer.start(new InetSocketAddress(bind, port), simulation, token, limits);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                recorder.close();
-                checkpoints.close();
-                throw new IOException("interrupted while binding port " + port, e);
-            } catch (RuntimeException e) {
-                recorder.close();
-                checkpoints.close();
-                throw new IOException("cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
-            }
-            TickLoop loop = new TickLoop(simulation);
-            Thread thread = new Thread(loop, "orchard-tick");
-            // The one thread the game waits for comes first. (The JVM passes this on to the system only
-            // where it may: on Linux with -XX:ThreadPriorityPolicy=1, as root.)
-            thread.setPriority(Thread.MAX_PRIORITY);
-            thread.start();
-            if (checkpointFile != null && checkpointEvery != null) {
-                checkpoints.every(checkpointEvery, () -> simulation.checkpointAtTickEnd(
-                        state -> checkpoints.write(state, checkpointFile, null)));
-            }
-            return new WorldServer(simulation, net, loop, thread, recorder, over, checkpoints);
+            return Startup.start(this);
         }
     }
 }

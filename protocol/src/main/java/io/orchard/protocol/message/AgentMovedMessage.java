@@ -20,7 +20,7 @@ public record AgentMovedMessage(long tick,
                                 Vec3 from,
                                 Vec3 to,
                                 double startTime,
-                                double duration) implements ServerMessage {
+                                double duration) implements ServerMessage, AgentMessage {
 
     public AgentMovedMessage {
         Checks.nonNegative(tick, "tick");

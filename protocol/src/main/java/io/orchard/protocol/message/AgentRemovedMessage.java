@@ -11,7 +11,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record AgentRemovedMessage(long tick,
                                   String agent,
-                                  String reason) implements ServerMessage {
+                                  String reason) implements ServerMessage, AgentMessage {
 
     public AgentRemovedMessage {
         Checks.nonNegative(tick, "tick");

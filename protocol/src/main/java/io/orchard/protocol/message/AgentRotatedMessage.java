@@ -12,7 +12,7 @@ import io.orchard.protocol.value.Rotation;
  */
 public record AgentRotatedMessage(long tick,
                                   String agent,
-                                  Rotation rotation) implements ServerMessage {
+                                  Rotation rotation) implements ServerMessage, AgentMessage {
 
     public AgentRotatedMessage {
         Checks.nonNegative(tick, "tick");

@@ -13,7 +13,7 @@ import io.orchard.protocol.value.Checks;
 public record AnimationStartedMessage(long tick,
                                       String agent,
                                       String timeSensor,
-                                      boolean loop) implements ServerMessage {
+                                      boolean loop) implements ServerMessage, AgentMessage {
 
     public AnimationStartedMessage {
         Checks.nonNegative(tick, "tick");

@@ -11,7 +11,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record AnimationStoppedMessage(long tick,
                                       String agent,
-                                      String timeSensor) implements ServerMessage {
+                                      String timeSensor) implements ServerMessage, AgentMessage {
 
     public AnimationStoppedMessage {
         Checks.nonNegative(tick, "tick");

@@ -13,7 +13,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record GraspRequestMessage(long seq,
                                   String agent,
-                                  String fruit) implements ClientMessage {
+                                  String fruit) implements ClientMessage, AgentMessage {
 
     public GraspRequestMessage {
         Checks.nonNegative(seq, "seq");

@@ -14,7 +14,7 @@ import io.orchard.protocol.value.Rotation;
 public record JointRotatedMessage(long tick,
                                   String agent,
                                   String joint,
-                                  Rotation rotation) implements ServerMessage {
+                                  Rotation rotation) implements ServerMessage, AgentMessage {
 
     public JointRotatedMessage {
         Checks.nonNegative(tick, "tick");

@@ -17,7 +17,7 @@ import io.orchard.protocol.value.Vec3;
 public record MoveMessage(long seq,
                           String agent,
                           Vec3 from,
-                          Vec3 to) implements ClientMessage {
+                          Vec3 to) implements ClientMessage, AgentMessage {
 
     public MoveMessage {
         Checks.nonNegative(seq, "seq");

@@ -14,7 +14,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record PerceptionRequestMessage(long seq,
                                        String agent,
-                                       int every) implements ClientMessage {
+                                       int every) implements ClientMessage, AgentMessage {
 
     public PerceptionRequestMessage {
         Checks.nonNegative(seq, "seq");

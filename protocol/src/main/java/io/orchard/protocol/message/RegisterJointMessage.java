@@ -12,7 +12,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record RegisterJointMessage(long seq,
                                    String agent,
-                                   String joint) implements ClientMessage {
+                                   String joint) implements ClientMessage, AgentMessage {
 
     public RegisterJointMessage {
         Checks.nonNegative(seq, "seq");

@@ -12,7 +12,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record RegisterTimeSensorMessage(long seq,
                                         String agent,
-                                        String timeSensor) implements ClientMessage {
+                                        String timeSensor) implements ClientMessage, AgentMessage {
 
     public RegisterTimeSensorMessage {
         Checks.nonNegative(seq, "seq");

@@ -12,7 +12,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record SayMessage(long seq,
                          String agent,
-                         String text) implements ClientMessage, ServerMessage {
+                         String text) implements ClientMessage, ServerMessage, AgentMessage {
 
     public SayMessage {
         Checks.nonNegative(seq, "seq");

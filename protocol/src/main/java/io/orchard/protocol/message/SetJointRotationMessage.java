@@ -14,7 +14,7 @@ import io.orchard.protocol.value.Rotation;
 public record SetJointRotationMessage(long seq,
                                       String agent,
                                       String joint,
-                                      Rotation rotation) implements ClientMessage {
+                                      Rotation rotation) implements ClientMessage, AgentMessage {
 
     public SetJointRotationMessage {
         Checks.nonNegative(seq, "seq");

@@ -12,7 +12,7 @@ import io.orchard.protocol.value.Rotation;
  */
 public record SetRotationMessage(long seq,
                                  String agent,
-                                 Rotation rotation) implements ClientMessage {
+                                 Rotation rotation) implements ClientMessage, AgentMessage {
 
     public SetRotationMessage {
         Checks.nonNegative(seq, "seq");

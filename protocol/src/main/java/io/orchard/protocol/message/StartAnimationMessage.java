@@ -13,7 +13,7 @@ import io.orchard.protocol.value.Checks;
 public record StartAnimationMessage(long seq,
                                     String agent,
                                     String timeSensor,
-                                    boolean loop) implements ClientMessage {
+                                    boolean loop) implements ClientMessage, AgentMessage {
 
     public StartAnimationMessage {
         Checks.nonNegative(seq, "seq");

@@ -11,7 +11,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record StopAnimationMessage(long seq,
                                    String agent,
-                                   String timeSensor) implements ClientMessage {
+                                   String timeSensor) implements ClientMessage, AgentMessage {
 
     public StopAnimationMessage {
         Checks.nonNegative(seq, "seq");

@@ -9,7 +9,7 @@ import io.orchard.protocol.value.Checks;
  * @param agent the agent's name
  */
 public record UnregisterMessage(long seq,
-                                String agent) implements ClientMessage {
+                                String agent) implements ClientMessage, AgentMessage {
 
     public UnregisterMessage {
         Checks.nonNegative(seq, "seq");

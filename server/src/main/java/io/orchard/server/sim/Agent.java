@@ -6,6 +6,7 @@ import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Vec3;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Set;
 
 /**
@@ -45,6 +46,12 @@ final class Agent {
     AgentState state() {
         return new AgentState(name, body, position, heading, model, new ArrayList<>(joints),
                 new ArrayList<>(timeSensors));
+    }
+
+    /** The agent as a checkpoint keeps it. */
+    Checkpoint.SavedAgent saved() {
+        return new Checkpoint.SavedAgent(name, body, model, position, heading, List.copyOf(joints),
+                List.copyOf(timeSensors), resumeToken);
     }
 
     /** Whether this agent wants its perception in the tick {@code tick}. */

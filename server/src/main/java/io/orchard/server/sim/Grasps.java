@@ -23,13 +23,20 @@ final class Grasps {
 
     private record Request(Agent agent, GraspRequestMessage message) {}
 
-    private final Simulation sim;
     private final World world;
+    /** The agents in the world, by name. */
+    private final Map<String, Agent> agents;
+    private final Scoreboard scores;
+    private final Outbox outbox;
+    private final List<GameListener> listeners;
     private final Map<String, List<Request>> byFruit = new LinkedHashMap<>();
 
-    Grasps(Simulation sim, World world) {
-        this.sim = sim;
+    Grasps(World world, Map<String, Agent> agents, Scoreboard scores, Outbox outbox, List<GameListener> listeners) {
         this.world = world;
+        this.agents = agents;
+        this.scores = scores;
+        this.outbox = outbox;
+        this.listeners = listeners;
     }
 
     void request(Agent agent, GraspRequestMessage message, boolean running) {
@@ -44,14 +51,16 @@ final class Grasps {
         byFruit.clear();
     }
 
-    void resolve(long tick, double time) {
+    /** Decides the grasps asked for in this tick; true when a fruit was collected, so that scores changed. */
+    boolean resolve(long tick, double time) {
+        boolean collected = false;
         for (Map.Entry<String, List<Request>> entry : byFruit.entrySet()) {
             Fruit fruit = world.fruit(entry.getKey()).orElse(null);
             Request winner = null;
             double best = Double.MAX_VALUE;
             List<Request> reachable = new ArrayList<>();
             for (Request request : entry.getValue()) {
-                if (!sim.agents.containsKey(request.agent().name)) {
+                if (!agents.containsKey(request.agent().name)) {
                     continue; // it left during the tick
                 }
                 if (fruit == null) {
@@ -80,22 +89,24 @@ final class Grasps {
                 }
             }
             collect(winner, fruit, tick, time);
+            collected = true;
         }
         byFruit.clear();
+        return collected;
     }
 
     private void collect(Request winner, Fruit fruit, long tick, double time) {
         Agent agent = winner.agent();
         world.removeFruit(fruit.id());
-        int points = sim.scores.collect(agent.name, fruit.kind());
-        sim.send(agent.owner, new GraspResultMessage(winner.message().seq(), agent.name, fruit.id(), true, null, points));
-        sim.broadcast(new FruitEatenMessage(tick, fruit.id(), fruit.kind(), agent.name), Audience.AGENTS);
-        sim.broadcast(new FruitRemovedMessage(tick, fruit.id(), agent.name), Audience.VIEWERS);
-        sim.scoreChanged();
-        sim.fruitEaten(agent, fruit);
+        int points = scores.collect(agent.name, fruit.kind());
+        outbox.send(agent.owner, new GraspResultMessage(winner.message().seq(), agent.name, fruit.id(), true, null,
+                points));
+        outbox.broadcast(new FruitEatenMessage(tick, fruit.id(), fruit.kind(), agent.name), Audience.AGENTS);
+        outbox.broadcast(new FruitRemovedMessage(tick, fruit.id(), agent.name), Audience.VIEWERS);
+        listeners.forEach(l -> l.fruitEaten(agent.name, fruit.id(), fruit.kind(), time));
     }
 
     private void fail(Agent agent, GraspRequestMessage message, String reason) {
-        sim.send(agent.owner, new GraspResultMessage(message.seq(), agent.name, message.fruit(), false, reason, 0));
+        outbox.send(agent.owner, new GraspResultMessage(message.seq(), agent.name, message.fruit(), false, reason, 0));
     }
 }

@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.locks.LockSupport;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -14,7 +13,8 @@ import org.slf4j.LoggerFactory;
  * fixed wall-clock schedule (20 a second by default) and what arrives late waits for the next; in
  * lockstep mode a tick ends as soon as every client that drives an agent has ended its turn, or
  * when the deadline passes. While no game runs it applies what clients send as it comes. It
- * measures how long each tick works ({@link #stats()}).
+ * measures how long each tick works ({@link #stats()}). Its time is a {@link LoopClock}, the system's
+ * in a server, so that tests step it without waiting.
  */
 public final class TickLoop implements Runnable {
 
@@ -24,14 +24,21 @@ public final class TickLoop implements Runnable {
     private static final int MAX_BEHIND_TICKS = 3;
 
     private final Simulation sim;
+    private final LoopClock clock;
     private final TickTimes times = new TickTimes();
     private volatile boolean stopped;
-    /** When the next realtime tick is due (System.nanoTime); reset when ticks start passing again. */
+    /** When the next realtime tick is due (on the clock); reset when ticks start passing again. */
     private long due;
     private boolean wasRunning;
 
+    /** A loop on the system's clock. */
     public TickLoop(Simulation sim) {
+        this(sim, LoopClock.SYSTEM);
+    }
+
+    TickLoop(Simulation sim, LoopClock clock) {
         this.sim = sim;
+        this.clock = clock;
     }
 
     /** Asks the loop to end after the current step; the thread then returns from {@link #run()}. */
@@ -53,16 +60,7 @@ public final class TickLoop implements Runnable {
     public void run() {
         try {
             while (!stopped) {
-                if (sim.phase() == Phase.RUNNING) {
-                    if (!wasRunning) {
-                        due = System.nanoTime();
-                        wasRunning = true;
-                    }
-                    tick();
-                } else {
-                    wasRunning = false;
-                    idle();
-                }
+                step();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -72,8 +70,22 @@ public final class TickLoop implements Runnable {
         }
     }
 
+    /** One tick while the game runs; otherwise what clients sent, or a short wait for it. */
+    void step() throws InterruptedException {
+        if (sim.phase() == Phase.RUNNING) {
+            if (!wasRunning) {
+                due = clock.nanoTime();
+                wasRunning = true;
+            }
+            tick();
+        } else {
+            wasRunning = false;
+            idle();
+        }
+    }
+
     private void idle() throws InterruptedException {
-        Event first = sim.poll(50);
+        Event first = sim.poll(clock, 50);
         List<Event> events = new ArrayList<>();
         if (first != null) {
             events.add(first);
@@ -86,10 +98,10 @@ public final class TickLoop implements Runnable {
 
     private void tick() throws InterruptedException {
         long tick = sim.tick();
-        long started = System.nanoTime();
+        long started = clock.nanoTime();
         boolean late = started - due > tickNanos();
         sim.beginTick();
-        long work = System.nanoTime() - started;
+        long work = clock.nanoTime() - started;
         List<Event> events = new ArrayList<>();
         if (sim.lockstep()) {
             collectUntilTurnsEnd(tick, events);
@@ -98,23 +110,20 @@ public final class TickLoop implements Runnable {
             // clock that fell far behind (a long pause, an overload) starts a new schedule instead
             // of rushing through the ticks it missed.
             due += tickNanos();
-            long now = System.nanoTime();
+            long now = clock.nanoTime();
             if (now - due > MAX_BEHIND_TICKS * tickNanos()) {
                 due = now;
             }
             // What clients send only counts at the end of the tick: sleep until then, then take it all.
             long left;
-            while (!stopped && (left = due - System.nanoTime()) > 0) {
-                LockSupport.parkNanos(left);
-                if (Thread.interrupted()) {
-                    throw new InterruptedException();
-                }
+            while (!stopped && (left = due - clock.nanoTime()) > 0) {
+                clock.sleep(left);
             }
         }
         sim.drain(events);
-        long ending = System.nanoTime();
+        long ending = clock.nanoTime();
         sim.endTick(events);
-        work += System.nanoTime() - ending;
+        work += clock.nanoTime() - ending;
         times.record(work, late);
     }
 
@@ -123,7 +132,7 @@ public final class TickLoop implements Runnable {
     }
 
     private void collectUntilTurnsEnd(long tick, List<Event> events) throws InterruptedException {
-        long deadline = System.nanoTime() + sim.config().lockstepDeadline().toNanos();
+        long deadline = clock.nanoTime() + sim.config().lockstepDeadline().toNanos();
         // Who drives an agent cannot change before the end of the tick (registrations take effect
         // then), except by leaving.
         Set<Long> waiting = new HashSet<>(sim.agentSessions());
@@ -132,11 +141,11 @@ public final class TickLoop implements Runnable {
             if (anyone && waiting.isEmpty()) {
                 return;
             }
-            long left = deadline - System.nanoTime();
+            long left = deadline - clock.nanoTime();
             if (left <= 0) {
                 return;
             }
-            Event event = sim.poll(Math.max(1, left / 1_000_000));
+            Event event = sim.poll(clock, Math.max(1, left / 1_000_000));
             if (event == null) {
                 continue;
             }

@@ -3,6 +3,7 @@ package io.orchard.server.sim;
 import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.Recorder.Audience;
+import java.util.Map;
 
 /**
  * Moves walking agents along their paths and keeps them from walking into each other. Agents are
@@ -17,11 +18,17 @@ final class Walking {
     /** Grid cell size: twice the largest body radius, so touching agents are in neighbouring cells. */
     private static final double CELL = 4.0;
 
-    private final Simulation sim;
+    /** The agents in the world, by name. */
+    private final Map<String, Agent> agents;
+    /** The largest radius a body may have: how far from a walker's path another agent may stand and touch it. */
+    private final double maxRadius;
+    private final Outbox outbox;
     private AgentGrid grid;
 
-    Walking(Simulation sim) {
-        this.sim = sim;
+    Walking(Map<String, Agent> agents, double maxRadius, Outbox outbox) {
+        this.agents = agents;
+        this.maxRadius = maxRadius;
+        this.outbox = outbox;
     }
 
     /** The first agent the segment from {@code from} to {@code to} runs into, or null if none. */
@@ -33,17 +40,17 @@ final class Walking {
             return null;
         }
         // Only agents whose centre lies within reach of the segment's box can be met.
-        double margin = mover.body.radius() + sim.config().bodyLimits().maxRadius();
+        double margin = mover.body.radius() + maxRadius;
         double minX = Math.min(from.x(), to.x()) - margin;
         double minZ = Math.min(from.z(), to.z()) - margin;
         double maxX = Math.max(from.x(), to.x()) + margin;
         double maxZ = Math.max(from.z(), to.z()) + margin;
         Nearest nearest = new Nearest(mover, from, dx, dz, length);
         AgentGrid grid = grid();
-        if (grid.cellsIn(minX, minZ, maxX, maxZ) < sim.agents.size()) {
+        if (grid.cellsIn(minX, minZ, maxX, maxZ) < agents.size()) {
             grid.forEachInBox(minX, minZ, maxX, maxZ, nearest);
         } else {
-            sim.agents.values().forEach(nearest);
+            agents.values().forEach(nearest);
         }
         if (nearest.first == null) {
             return null;
@@ -86,7 +93,7 @@ final class Walking {
     /** The agents by where they stand, built when first asked for after the agents changed. */
     private AgentGrid grid() {
         if (grid == null) {
-            grid = new AgentGrid(sim.agents.values(), CELL);
+            grid = new AgentGrid(agents.values(), CELL);
         }
         return grid;
     }
@@ -121,7 +128,7 @@ final class Walking {
 
     /** Whether a body of {@code radius} at {@code point} would touch no agent but {@code except}. */
     boolean clearOfAgents(Vec3 point, double radius, Agent except) {
-        for (Agent other : sim.agents.values()) {
+        for (Agent other : agents.values()) {
             if (other != except && other.position.groundDistance(point) < radius + other.body.radius()) {
                 return false;
             }
@@ -132,7 +139,7 @@ final class Walking {
     /** Moves every walking agent to where it is at {@code time}; one that would touch another stops. */
     void advance(double time) {
         AgentGrid grid = grid(); // moved along with the agents below, so it stays true
-        for (Agent agent : sim.agents.values()) {
+        for (Agent agent : agents.values()) {
             Motion motion = agent.motion;
             if (motion == null) {
                 continue;
@@ -140,8 +147,8 @@ final class Walking {
             Vec3 next = motion.positionAt(time);
             if (touchesAnother(grid, agent, next)) {
                 agent.motion = null;
-                sim.broadcast(new AgentMovedMessage(sim.tick(), agent.name, agent.position, agent.position, time, 0),
-                        Audience.VIEWERS);
+                outbox.broadcast(new AgentMovedMessage(outbox.tick(), agent.name, agent.position, agent.position,
+                        time, 0), Audience.VIEWERS);
                 continue;
             }
             grid.move(agent, next);

@@ -101,7 +101,7 @@ class HostileActionsTest {
 
     @Test
     void aGameTakesOnlySoManyDifferentNamesSoThatRegistrationsCannotFillTheMemory() {
-        sim.maxNames = 3;
+        sim.registrations.maxNames = 3;
         for (int i = 0; i < 5; i++) {
             FakeSession churn = new FakeSession(10 + i, Role.AGENT);
             sim.connected(churn);

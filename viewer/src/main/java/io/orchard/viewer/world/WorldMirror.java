@@ -1,6 +1,7 @@
 package io.orchard.viewer.world;
 
 import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.AgentRotatedMessage;
@@ -122,33 +123,6 @@ public final class WorldMirror {
             showWorld(s);
         } else if (message instanceof AgentAddedMessage added) {
             addAgent(added);
-        } else if (message instanceof AgentMovedMessage moved) {
-            withAgent(moved.agent(), agent -> {
-                Move move = new Move(moved.from(), moved.to(), moved.startTime(), moved.duration());
-                agent.moved(move);
-                listeners.forEach(l -> l.agentMoved(agent, move));
-            });
-        } else if (message instanceof AgentRotatedMessage rotated) {
-            withAgent(rotated.agent(), agent -> {
-                agent.rotated(rotated.rotation());
-                listeners.forEach(l -> l.agentRotated(agent, rotated.rotation(), time));
-            });
-        } else if (message instanceof JointRotatedMessage joint) {
-            withAgent(joint.agent(), agent -> {
-                agent.jointRotated(joint.joint(), joint.rotation());
-                listeners.forEach(l -> l.jointRotated(agent, joint.joint(), joint.rotation(), time));
-            });
-        } else if (message instanceof AnimationStartedMessage started) {
-            withAgent(started.agent(), agent -> {
-                RunningAnimation animation = new RunningAnimation(started.timeSensor(), started.loop(), time);
-                agent.animationStarted(animation);
-                listeners.forEach(l -> l.animationStarted(agent, animation));
-            });
-        } else if (message instanceof AnimationStoppedMessage stopped) {
-            withAgent(stopped.agent(), agent -> {
-                agent.animationStopped(stopped.timeSensor());
-                listeners.forEach(l -> l.animationStopped(agent, stopped.timeSensor(), time));
-            });
         } else if (message instanceof FruitRemovedMessage removed) {
             removeFruit(removed);
         } else if (message instanceof AgentRemovedMessage removed) {
@@ -179,6 +153,33 @@ public final class WorldMirror {
             note(LogLine.Kind.EVENT, "game over: " + end.reason());
         } else if (message instanceof ErrorMessage error) {
             note(LogLine.Kind.PROBLEM, "server: " + error.code().wireName() + ": " + error.text());
+        } else if (message instanceof AgentMessage about) {
+            AgentView agent = agents.get(about.agent());
+            if (agent != null) {
+                changeAgent(agent, about);
+            }
+        }
+    }
+
+    /** The news of an agent the viewer knows: it walks, turns, moves a joint or plays an animation. */
+    private void changeAgent(AgentView agent, AgentMessage message) {
+        if (message instanceof AgentMovedMessage moved) {
+            Move move = new Move(moved.from(), moved.to(), moved.startTime(), moved.duration());
+            agent.moved(move);
+            listeners.forEach(l -> l.agentMoved(agent, move));
+        } else if (message instanceof AgentRotatedMessage rotated) {
+            agent.rotated(rotated.rotation());
+            listeners.forEach(l -> l.agentRotated(agent, rotated.rotation(), time));
+        } else if (message instanceof JointRotatedMessage joint) {
+            agent.jointRotated(joint.joint(), joint.rotation());
+            listeners.forEach(l -> l.jointRotated(agent, joint.joint(), joint.rotation(), time));
+        } else if (message instanceof AnimationStartedMessage started) {
+            RunningAnimation animation = new RunningAnimation(started.timeSensor(), started.loop(), time);
+            agent.animationStarted(animation);
+            listeners.forEach(l -> l.animationStarted(agent, animation));
+        } else if (message instanceof AnimationStoppedMessage stopped) {
+            agent.animationStopped(stopped.timeSensor());
+            listeners.forEach(l -> l.animationStopped(agent, stopped.timeSensor(), time));
         }
     }
 
@@ -291,13 +292,6 @@ public final class WorldMirror {
         if (gone != null) {
             note(LogLine.Kind.EVENT, removed.agent() + " collected " + gone.kind().wireName() + " " + gone.id());
             listeners.forEach(l -> l.fruitRemoved(gone, removed.agent()));
-        }
-    }
-
-    private void withAgent(String name, java.util.function.Consumer<AgentView> change) {
-        AgentView agent = agents.get(name);
-        if (agent != null) {
-            change.accept(agent);
         }
     }
 }

@@ -1,0 +1,96 @@
+package io.orchard.server;
+
+import io.orchard.protocol.value.Score;
+import io.orchard.server.net.NetServer;
+import io.orchard.server.sim.Checkpoint;
+import io.orchard.server.sim.CheckpointFile;
+import io.orchard.server.sim.FileRecorder;
+import io.orchard.server.sim.GameListener;
+import io.orchard.server.sim.Phase;
+import io.orchard.server.sim.Recorder;
+import io.orchard.server.sim.Simulation;
+import io.orchard.server.sim.SimulationConfig;
+import io.orchard.server.sim.TickLoop;
+import io.orchard.server.world.World;
+import io.orchard.server.world.WorldGenerator;
+import io.orchard.server.world.scenario.ScenarioFile;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ThreadLocalRandom;
+
+/**
+ * Puts a {@link WorldServer} together from its builder's settings, in order: the game (new, or
+ * continued from a checkpoint), its recording and checkpoints, the network, and the tick thread.
+ * What was opened is closed again when the network cannot start.
+ */
+final class Startup {
+
+    private Startup() {}
+
+    static WorldServer start(WorldServer.Builder settings) throws IOException {
+        Checkpoint saved = settings.resume != null ? CheckpointFile.read(settings.resume) : null;
+        long actualSeed = saved != null ? saved.seed()
+                : settings.seed != null ? settings.seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
+        World world = saved != null ? World.fromScenario(saved.world())
+                : settings.scenario != null ? World.fromScenario(ScenarioFile.read(settings.scenario))
+                : WorldGenerator.standard(actualSeed).generate();
+        SimulationConfig config = saved != null
+                ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
+                        settings.lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
+                        SimulationConfig.DEFAULT.bodyLimits())
+                : new SimulationConfig(settings.tickRate, settings.clock, settings.timeLimit, settings.waitFor,
+                        settings.lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
+                        SimulationConfig.DEFAULT.bodyLimits());
+        Recorder recorder = settings.record != null ? FileRecorder.open(settings.record, saved != null)
+                : Recorder.NONE;
+        CompletableFuture<List<Score>> over = new CompletableFuture<>();
+        List<GameListener> all = new ArrayList<>(settings.listeners);
+        all.add(new GameListener() {
+            @Override
+            public void gameOver(String reason, List<Score> ranking) {
+                over.complete(ranking);
+            }
+        });
+        Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
+                settings.placement);
+        if (saved != null) {
+            simulation.restore(saved);
+            if (simulation.phase() == Phase.OVER) {
+                over.complete(simulation.ranking());
+            }
+        }
+        Checkpoints checkpoints = new Checkpoints(settings.checkpointFile);
+        if (settings.checkpointFile != null) {
+            simulation.checkpointWhenScored(checkpoints::offer);
+        }
+        NetServer net;
+        try {
+            net = NetServer.start(new InetSocketAddress(settings.bind, settings.port), simulation, settings.token,
+                    settings.limits);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            recorder.close();
+            checkpoints.close();
+            throw new IOException("interrupted while binding port " + settings.port, e);
+        } catch (RuntimeException e) {
+            recorder.close();
+            checkpoints.close();
+            throw new IOException("cannot listen on " + settings.bind + ":" + settings.port + ": " + e.getMessage(),
+                    e);
+        }
+        TickLoop loop = new TickLoop(simulation);
+        Thread thread = new Thread(loop, "orchard-tick");
+        // The one thread the game waits for comes first. (The JVM passes this on to the system only
+        // where it may: on Linux with -XX:ThreadPriorityPolicy=1, as root.)
+        thread.setPriority(Thread.MAX_PRIORITY);
+        thread.start();
+        if (settings.checkpointFile != null && settings.checkpointEvery != null) {
+            checkpoints.every(settings.checkpointEvery, () -> simulation.checkpointAtTickEnd(
+                    state -> checkpoints.write(state, settings.checkpointFile, null)));
+        }
+        return new WorldServer(simulation, net, loop, thread, recorder, over, checkpoints);
+    }
+}
