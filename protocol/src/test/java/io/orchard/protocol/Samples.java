@@ -17,7 +17,7 @@ final class Samples {
     static final List<Score> SCORES = List.of(new Score("Guppy", 5, 3), new Score("Bunny", 1, 1));
 
     private static final List<Message> ALL = List.of(
-            new HelloMessage(1, 1, Role.AGENT, "guppy-controller", null),
+            new HelloMessage(1, 2, Role.AGENT, "guppy-controller", null),
             new RegisterMessage(2, "Guppy", BODY, ModelSpec.bundled("guppy")),
             new RegisterJointMessage(3, "Guppy", "LeftKnee"),
             new RegisterTimeSensorMessage(4, "Guppy", "GuppyTSWalk"),
@@ -33,9 +33,10 @@ final class Samples {
             new InstructionMessage(14, "Guppy", "pick up the banana on the table", "teacher"),
             new SayMessage(15, "Guppy", "Which banana do you mean: F3 or F7?"),
             new GameControlMessage(16, GameCommand.START),
-            new WelcomeMessage(1, 1, "0.1.0", Role.AGENT, new Bounds(-100, -100, 100, 100), 20, ClockMode.LOCKSTEP, 0),
+            new KeepAliveMessage(17),
+            new WelcomeMessage(1, 2, "0.1.0", Role.AGENT, new Bounds(-100, -100, 100, 100), 20, ClockMode.LOCKSTEP, 0),
             new ErrorMessage(6, ErrorCode.INVALID_VALUE, "Move: from.x must be a finite number, was Infinity"),
-            new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0, "3f9c2a7e41b8d05c6e1f9a2b7c4d8e0f"),
+            new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0, "3f9c2a7e41b8d05c6e1f9a2b7c4d8e0f", 8071234567890123456L),
             new ActionResultMessage(6, "Guppy", "Move", Outcome.REJECTED, "path crosses tree T17", null, 0),
             new GraspResultMessage(11, "Guppy", "F12", true, null, 2),
             new PerceptionMessage(43, "Guppy", HERE, 0.25,

@@ -14,12 +14,15 @@ import io.orchard.protocol.value.Role;
  * @param role agent control client or viewer
  * @param client a free name for the client program, for logs
  * @param token the shared secret, when the server requires one
+ * @param operatorToken the operator's secret (version 2): a client that presents the one the server
+ *                      was given may start, pause and resume the game with {@link GameControlMessage}
  */
 public record HelloMessage(long seq,
                            int protocolVersion,
                            Role role,
                            String client,
-                           @Nullable String token) implements ClientMessage {
+                           @Nullable String token,
+                           @Nullable String operatorToken) implements ClientMessage {
 
     public HelloMessage {
         Checks.nonNegative(seq, "seq");
@@ -29,5 +32,11 @@ public record HelloMessage(long seq,
         Checks.present(role, "role");
         Checks.text(client, "client");
         Checks.optionalText(token, "token");
+        Checks.optionalText(operatorToken, "operatorToken");
+    }
+
+    /** A hello without an operator token. */
+    public HelloMessage(long seq, int protocolVersion, Role role, String client, String token) {
+        this(seq, protocolVersion, role, client, token, null);
     }
 }

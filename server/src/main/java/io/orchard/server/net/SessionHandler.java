@@ -58,9 +58,9 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                     "the first message must be Hello, was " + io.orchard.protocol.MessageTypes.nameOf(message.getClass())));
             return;
         }
-        if (hello.protocolVersion() != ProtocolVersion.CURRENT) {
-            refuse(ctx, hello, ErrorCode.VERSION_MISMATCH, "server speaks protocol " + ProtocolVersion.CURRENT
-                    + ", client asked for " + hello.protocolVersion());
+        if (!ProtocolVersion.isSpoken(hello.protocolVersion())) {
+            refuse(ctx, hello, ErrorCode.VERSION_MISMATCH, "server speaks protocol versions " + ProtocolVersion.OLDEST
+                    + " to " + ProtocolVersion.CURRENT + ", client asked for " + hello.protocolVersion());
             return;
         }
         if (token != null && !tokenMatches(hello.token())) {

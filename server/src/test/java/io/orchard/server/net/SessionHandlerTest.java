@@ -6,6 +6,7 @@ import io.netty.channel.embedded.EmbeddedChannel;
 import io.netty.handler.timeout.IdleStateEvent;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
+import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
@@ -20,6 +21,8 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.junit.jupiter.params.ParameterizedTest;
 
 /** The handshake and what follows it, on an embedded channel with an inbox that only listens. */
 class SessionHandlerTest {
@@ -100,12 +103,22 @@ class SessionHandlerTest {
     @Test
     void anotherProtocolVersionIsRefusedAndClosed() {
         EmbeddedChannel channel = channel(null);
-        channel.writeInbound(hello(2, null));
+        channel.writeInbound(hello(ProtocolVersion.CURRENT + 1, null));
         ErrorMessage error = channel.readOutbound();
         assertThat(error.code()).isEqualTo(ErrorCode.VERSION_MISMATCH);
-        assertThat(error.text()).contains("client asked for 2");
+        assertThat(error.text()).contains("client asked for " + (ProtocolVersion.CURRENT + 1));
         assertThat(channel.isOpen()).isFalse();
         assertThat(inbox.connected).isEmpty();
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2})
+    void everyVersionFromTheOldestToTheCurrentIsWelcomed(int version) {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(version, null));
+        assertThat((Object) channel.readOutbound()).isInstanceOf(WelcomeMessage.class);
+        assertThat(channel.isOpen()).isTrue();
+        assertThat(inbox.connected).hasSize(1);
     }
 
     @Test
