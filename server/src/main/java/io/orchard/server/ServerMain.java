@@ -36,6 +36,8 @@ public final class ServerMain {
             .value("tick-rate", "N", "ticks per simulated second", "20")
             .value("wait-for", "N", "start the game when N agents have registered (0: at the first)", "0")
             .value("time-limit", "SECONDS", "length of the game in simulated seconds", "300")
+            .value("turn-deadline", "SECONDS", "lockstep: how long a tick waits for an agent's turn (wall clock); an "
+                    + "agent that misses it 3 times in a row is no longer waited for until it is in time again", "2")
             .value("scenario", "FILE", "load the world from a scenario file instead of generating it", null)
             .value("write-scenario", "FILE", "write the world (generated from --seed) as a scenario file and exit",
                     null)
@@ -120,7 +122,7 @@ public final class ServerMain {
                 .tickRate(options.integer("tick-rate", 1, 1000))
                 .waitFor(options.integer("wait-for", 0, 10_000))
                 .timeLimit(options.number("time-limit", 0.001, 1e7))
-                .lockstepDeadline(Duration.ofSeconds(2));
+                .lockstepDeadline(Duration.ofMillis(Math.round(options.number("turn-deadline", 0.001, 3600) * 1000)));
         Long seed = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
         if (seed != null) {
             builder.seed(seed);

@@ -187,6 +187,7 @@ public final class WorldServer implements AutoCloseable {
         }
         checkpoints.close();
         net.close();
+        simulation.stopped();
         recorder.close();
         gameOver.cancel(false);
     }
@@ -272,7 +273,12 @@ public final class WorldServer implements AutoCloseable {
             return this;
         }
 
-        /** In lockstep, how long a tick waits for agents that have not ended their turn. */
+        /**
+         * In lockstep, how long (wall clock) a tick waits for agents that have not ended their turn,
+         * and a game whose agents have come waits for their setup turns; 2 s by default. A client
+         * that misses it three turns in a row is no longer waited for until it ends a turn in time
+         * again. Every missed turn is recorded.
+         */
         public Builder lockstepDeadline(Duration deadline) {
             if (deadline == null || deadline.isNegative() || deadline.isZero()) {
                 throw new IllegalArgumentException("lockstep deadline must be positive, was " + deadline);

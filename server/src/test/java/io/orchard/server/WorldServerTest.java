@@ -122,6 +122,7 @@ class WorldServerTest {
         Client agent = new Client(server.port(), Role.AGENT);
         RegisteredMessage registered = (RegisteredMessage) agent.ask(seq -> new RegisterMessage(seq, "Guppy", BODY, null));
         assertThat(registered.position()).isEqualTo(Vec3.ground(0, 0));
+        assertThat(registered.seed()).as("a version 2 client gets its agent's seed").isNotNull();
         assertThat(viewer.await(AgentAddedMessage.class, a -> true).agent().name()).isEqualTo("Guppy");
 
         ActionResultMessage blocked = (ActionResultMessage) agent.ask(seq ->
@@ -162,7 +163,8 @@ class WorldServerTest {
             String error = raw.read();
             assertThat(error).contains("\"type\":\"Error\"").contains("\"code\":\"" + code + "\"");
             raw.send("{\"type\":\"Register\",\"seq\":9,\"name\":\"Guppy\",\"body\":" + bodyJson() + "}");
-            assertThat(raw.readUntil("Registered")).contains("\"seq\":9");
+            assertThat(raw.readUntil("Registered")).contains("\"seq\":9")
+                    .as("a version 1 client is not sent the agent's seed").doesNotContain("\"seed\"");
         }
     }
 
@@ -453,6 +455,7 @@ class WorldServerTest {
                     inbox::add)) {
                 RegisteredMessage me = (RegisteredMessage) agent.request(seq -> new RegisterMessage(seq, "Guppy", BODY,
                         null)).get(10, TimeUnit.SECONDS);
+                agent.send(seq -> new EndTurnMessage(seq, 0)); // the setup turn: the game starts
                 Vec3 position = me.position();
                 while (!server.gameOver().isDone()) {
                     ServerMessage message = inbox.poll(10, TimeUnit.SECONDS);

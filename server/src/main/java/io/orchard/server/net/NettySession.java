@@ -34,6 +34,7 @@ final class NettySession implements ClientSession {
 
     private final long id;
     private final Role role;
+    private final int version;
     private final Channel channel;
     private final NetLimits limits;
     private final TickWrites writes;
@@ -42,10 +43,11 @@ final class NettySession implements ClientSession {
     /** Ticks whose messages were handed to the I/O thread and not yet written. */
     private final AtomicInteger unwritten = new AtomicInteger();
 
-    NettySession(long id, Role role, Channel channel, NetLimits limits, TickWrites writes) {
+    NettySession(long id, Role role, int version, Channel channel, NetLimits limits, TickWrites writes) {
         this.writes = writes;
         this.id = id;
         this.role = role;
+        this.version = version;
         this.channel = channel;
         this.limits = limits;
     }
@@ -58,6 +60,11 @@ final class NettySession implements ClientSession {
     @Override
     public Role role() {
         return role;
+    }
+
+    @Override
+    public int protocolVersion() {
+        return version;
     }
 
     @Override

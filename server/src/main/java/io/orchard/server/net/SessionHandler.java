@@ -68,7 +68,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                     ? "this server requires a token in Hello" : "wrong token");
             return;
         }
-        session = new NettySession(sessionIds.incrementAndGet(), hello.role(), ctx.channel(), limits, writes);
+        session = new NettySession(sessionIds.incrementAndGet(), hello.role(), hello.protocolVersion(),
+                ctx.channel(), limits, writes);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);

@@ -29,8 +29,6 @@ final class Agent {
     boolean perceptionRequested;
     int perceptionEvery;
     long nextPerceptionTick = -1;
-    /** The order agents joined in: earlier agents win ties, as they are applied first. */
-    long joined;
 
     Agent(String name, ClientSession owner, Body body, ModelSpec model, Vec3 position, double heading,
           String resumeToken) {

@@ -13,10 +13,13 @@ import java.util.Locale;
 
 /**
  * Writes a game's record as newline-delimited JSON, one line per message:
- * {@code {"tick":12,"time":0.6,"dir":"in","session":3,"msg":{...}}} for a message the server
- * accepted, {@code "dir":"out"} with {@code "to":"client"|"all"|"viewers"|"agents"} for one it sent.
- * Times are simulated, never the wall clock, so the same game gives the same bytes. Resume tokens
- * are left out: a record may be shared.
+ * {@code {"tick":12,"time":0.6,"dir":"in","client":"Dwarf","msg":{...}}} for a message the server
+ * accepted, {@code "dir":"out"} with {@code "to":"client"|"all"|"viewers"|"agents"} for one it sent
+ * (and {@code "client"} when it went to one client), and
+ * {@code {"tick":12,"time":0.6,"dir":"missed","client":"Dwarf","agents":["Dwarf"],"turn":"deadline"}}
+ * for a lockstep turn the game went on without ({@link MissedTurn}). Clients are named by labels
+ * (see {@link Recorder}), times are simulated, never the wall clock, so the same game gives the same
+ * bytes. Resume tokens are left out: a record may be shared.
  *
  * <p>Lines are collected and written at the end of every half tick, whole lines in one write, so
  * that a killed server leaves a record of complete lines up to its last tick.
@@ -48,20 +51,29 @@ public final class FileRecorder implements Recorder {
     }
 
     @Override
-    public void accepted(long tick, double time, long session, Message message) {
-        write(tick, time, "\"dir\":\"in\",\"session\":" + session, message);
+    public void accepted(long tick, double time, String client, Message message) {
+        write(tick, time, "\"dir\":\"in\",\"client\":\"" + client + "\",\"msg\":" + codec.encode(message));
     }
 
     @Override
-    public void sent(long tick, double time, Audience to, long session, Message message) {
+    public void sent(long tick, double time, Audience to, String client, Message message) {
         String audience = to.name().toLowerCase(Locale.ROOT);
         write(tick, time, "\"dir\":\"out\",\"to\":\"" + audience + "\""
-                + (to == Audience.CLIENT ? ",\"session\":" + session : ""), message);
+                + (to == Audience.CLIENT ? ",\"client\":\"" + client + "\"" : "") + ",\"msg\":"
+                + codec.encode(message));
     }
 
-    private void write(long tick, double time, String fields, Message message) {
-        byte[] line = ("{\"tick\":" + tick + ",\"time\":" + time + "," + fields + ",\"msg\":" + codec.encode(message)
-                + "}\n").getBytes(StandardCharsets.UTF_8);
+    @Override
+    public void missed(long tick, double time, String client, MissedTurn missed) {
+        // Labels and agents' names are letters, digits, '_' and '-': nothing to escape.
+        write(tick, time, "\"dir\":\"missed\",\"client\":\"" + client + "\",\"agents\":["
+                + String.join(",", missed.agents().stream().map(a -> "\"" + a + "\"").toList()) + "],\"turn\":\""
+                + missed.kind().wireName() + "\"");
+    }
+
+    private void write(long tick, double time, String fields) {
+        byte[] line = ("{\"tick\":" + tick + ",\"time\":" + time + "," + fields + "}\n")
+                .getBytes(StandardCharsets.UTF_8);
         pending.write(line, 0, line.length);
         if (pending.size() >= WRITE_AT) {
             flush();

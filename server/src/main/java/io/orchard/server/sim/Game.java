@@ -4,6 +4,7 @@ import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.message.GameStartedMessage;
+import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
@@ -13,6 +14,10 @@ import java.util.List;
 /**
  * Where the game is in its life ({@link Phase}) and what moves it on: enough agents, a command, a
  * pause, the fruit gone or the time up, and, for a restored game, its agents all back.
+ *
+ * <p>In lockstep, enough agents do not start the game at once: the start is then due, and comes
+ * once their clients have ended their setup turns ({@link Turns}), so that every agent's setup is
+ * applied before tick 0, whichever registered last.
  */
 final class Game {
 
@@ -22,13 +27,18 @@ final class Game {
     private final Scoreboard scores;
     private final Outbox outbox;
     private final List<GameListener> listeners;
+    /** Run just before the game starts: the last of the waiting. */
+    private final Runnable beforeStart;
     private Phase phase = Phase.WAITING;
+    /** In lockstep: enough agents came, and the game starts when their setup turns are over. */
+    private boolean startDue;
     private int fruitAtStart;
     /** Whether a restored game continues by itself once every waiting agent is back. */
     private boolean continueWhenAllBack;
 
     Game(World world, SimulationConfig config, long seed, Scoreboard scores, Outbox outbox,
-         List<GameListener> listeners) {
+         List<GameListener> listeners, Runnable beforeStart) {
+        this.beforeStart = beforeStart;
         this.world = world;
         this.config = config;
         this.seed = seed;
@@ -50,11 +60,19 @@ final class Game {
         return fruitAtStart;
     }
 
+    /** Whether enough agents came to a lockstep game, which starts once their setup turns are over. */
+    boolean startDue() {
+        return startDue && phase == Phase.WAITING;
+    }
+
     /** Starts the game now; no effect once started. */
     void start() {
         if (phase != Phase.WAITING) {
             return;
         }
+        startDue = false;
+        outbox.release();
+        beforeStart.run();
         phase = Phase.RUNNING;
         fruitAtStart = world.fruitCount();
         outbox.broadcast(new GameStartedMessage(outbox.tick(), seed, fruitAtStart, config.timeLimit()), Audience.ALL);
@@ -64,7 +82,11 @@ final class Game {
     /** A new agent entered, and {@code present} are in the world: the game starts when enough came. */
     void agentEntered(int present) {
         if (phase == Phase.WAITING && present >= Math.max(1, config.waitFor())) {
-            start();
+            if (config.clock() == ClockMode.LOCKSTEP) {
+                startDue = true;
+            } else {
+                start();
+            }
         }
     }
 
@@ -128,6 +150,8 @@ final class Game {
             return;
         }
         phase = Phase.OVER;
+        startDue = false;
+        outbox.release(); // a game ended before it started: what was held comes before the end
         List<Score> ranking = scores.ranking();
         outbox.broadcast(new GameOverMessage(outbox.tick(), reason, ranking), Audience.ALL);
         outbox.flush();

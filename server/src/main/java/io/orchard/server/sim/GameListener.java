@@ -25,6 +25,13 @@ public interface GameListener {
     /** The game ended; the ranking lists every agent that played, best first. */
     default void gameOver(String reason, List<Score> ranking) {}
 
+    /**
+     * In lockstep, the game went on without a client's turn: it had not ended its setup when the
+     * game started, or a tick's turn when the tick ended. A game with no missed turn is the same
+     * every time its agents play its seed.
+     */
+    default void turnMissed(MissedTurn missed) {}
+
     /** A tick ended (called once per tick, after the world changed). */
     default void tickEnded(long tick, double time) {}
 }

@@ -2,12 +2,14 @@ package io.orchard.server.sim;
 
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.Message;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.RegisteredMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.Recorder.Audience;
+import java.util.HashMap;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -19,6 +21,12 @@ import java.util.TreeMap;
  * <p>Messages queue in the sessions and in the recorder until {@link #flush()}, at the end of every
  * half tick. Clients are kept by their connection number, so a broadcast reaches them in the order
  * they connected.
+ *
+ * <p>The record is a function of the game, not of the order in which clients came: clients are
+ * named in it by labels ({@link Recorder}); what a viewer is sent to catch up with the game when
+ * it connects, and keep-alives, are left out (the broadcasts already hold the game); and until the
+ * game starts, lines are held back and then written client by client in the order of their labels
+ * ({@link HeldRecord}).
  */
 final class Outbox {
 
@@ -28,6 +36,12 @@ final class Outbox {
     private final Map<Long, ClientSession> sessions = new TreeMap<>();
     private final Map<Long, ClientSession> viewers = new TreeMap<>();
     private final Map<Long, ClientSession> agentClients = new TreeMap<>();
+    /** Agents' clients by the name of the first agent they asked to register, as the record names them. */
+    private final Map<Long, String> labels = new HashMap<>();
+    /** The client whose message is being applied: what is recorded meanwhile is its doing. */
+    private ClientSession cause;
+    /** Lines held until the game starts; null once it has. */
+    private HeldRecord held = new HeldRecord();
     /** Where the game is recorded; nothing after the game's end, so that the same game gives the same record. */
     private Recorder recorder;
     /** Read by the network threads for their welcomes. */
@@ -66,7 +80,18 @@ final class Outbox {
         }
         viewers.remove(session.id());
         agentClients.remove(session.id());
+        labels.remove(session.id());
         return true;
+    }
+
+    /** The client whose message is applied from now on (null: the server's own work). */
+    void from(ClientSession session) {
+        cause = session;
+    }
+
+    /** How the record names a client. */
+    String label(ClientSession session) {
+        return session.role() == Role.VIEWER ? "viewer" : labels.getOrDefault(session.id(), "agent");
     }
 
     /** Whether the client is connected, so that what it sends counts. */
@@ -76,17 +101,33 @@ final class Outbox {
 
     /** Records a client message that the simulation is about to apply. */
     void accepted(ClientSession session, ClientMessage message) {
-        recorder.accepted(tick, time, session.id(), withoutSecrets(message));
+        if (message instanceof KeepAliveMessage) {
+            return; // it says only that the client is there, whenever its clock says so
+        }
+        if (message instanceof RegisterMessage register && session.role() == Role.AGENT) {
+            labels.putIfAbsent(session.id(), register.name());
+        }
+        record(null, session, withoutSecrets(message), null);
     }
 
     void send(ClientSession session, ServerMessage message) {
-        recorder.sent(tick, time, Audience.CLIENT, session.id(), withoutSecrets(message));
+        record(Audience.CLIENT, session, withoutSecrets(message), null);
         session.send(message);
+    }
+
+    /** Sends without recording: what a client is told only to catch up with what the record already holds. */
+    void catchUp(ClientSession session, ServerMessage message) {
+        session.send(message);
+    }
+
+    /** Records a lockstep turn that the game went on without. */
+    void missed(ClientSession session, MissedTurn missed) {
+        record(null, session, null, missed);
     }
 
     /** Sends to every client of the audience, encoding the message once for all of them. */
     void broadcast(ServerMessage message, Audience audience) {
-        recorder.sent(tick, time, audience, 0, message);
+        record(audience, null, message, null);
         Map<Long, ClientSession> to = switch (audience) {
             case ALL -> sessions;
             case VIEWERS -> viewers;
@@ -110,7 +151,34 @@ final class Outbox {
 
     /** Records nothing more: the game is over. */
     void stopRecording() {
+        release();
         recorder = Recorder.NONE;
+    }
+
+    /** Writes what was held back while the game waited to start, and holds nothing from now on. */
+    void release() {
+        if (held != null) {
+            held.writeTo(recorder);
+            held = null;
+        }
+    }
+
+    /**
+     * One recorder call: {@code to} null for a message accepted from {@code client}; {@code missed}
+     * for a missed turn; else a message sent to the audience (to {@code client} alone for CLIENT).
+     */
+    private void record(Audience to, ClientSession client, Message message, MissedTurn missed) {
+        String label = client == null ? null : label(client);
+        if (held != null) {
+            held.add(cause != null ? cause : client, cause != null ? label(cause) : label, tick, time, to, label,
+                    message, missed);
+        } else if (missed != null) {
+            recorder.missed(tick, time, label, missed);
+        } else if (to == null) {
+            recorder.accepted(tick, time, label, message);
+        } else {
+            recorder.sent(tick, time, to, label, message);
+        }
     }
 
     /** Recordings may be shared: they keep no resume token. */

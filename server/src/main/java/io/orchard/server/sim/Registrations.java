@@ -1,6 +1,7 @@
 package io.orchard.server.sim;
 
 import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
@@ -20,6 +21,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
+import java.util.function.BiPredicate;
 import java.util.random.RandomGenerator;
 
 /**
@@ -28,8 +30,12 @@ import java.util.random.RandomGenerator;
  * secret with which its controller gets it back after a dropped connection or, from a checkpoint,
  * after a restart.
  *
- * <p>What decides the game's course is here: the order agents enter in ({@link Agent#joined}, which
- * breaks ties), and where each stands at first, drawn from the game's seed and its name alone.
+ * <p>What decides the game's course is here: where each agent stands at first, drawn from the
+ * game's seed and its name alone, and its own seed, which it draws its random numbers from. Neither
+ * depends on the order in which agents came: an agent registered before the game starts is placed
+ * clear of the world's obstacles only, and at the start ({@link #settle()}) agents are checked in
+ * the order of their names, each moving on to its next place if it touches an agent of an earlier
+ * name.
  */
 final class Registrations {
 
@@ -51,7 +57,6 @@ final class Registrations {
     private final Outbox outbox;
     private final List<GameListener> listeners;
     private final SecureRandom secrets = new SecureRandom();
-    private long joins;
     /** Agents of a restored game, waiting for their controllers: their names are reserved. */
     private final Map<String, Checkpoint.SavedAgent> waiting = new LinkedHashMap<>();
     /** Agents whose connection dropped, kept so that their controllers can get them back. */
@@ -106,7 +111,9 @@ final class Registrations {
         } else {
             Body body = config.bodyLimits().cap(register.body());
             RandomGenerator draws = placing(name);
-            Vec3 place = placeFor(name, body.radius(), draws);
+            // Before the start, where others stand is left to the start: it depends on who came first.
+            Vec3 place = placeFor(name, body.radius(), draws, game.phase() == Phase.WAITING
+                    ? (point, radius) -> true : (point, radius) -> walking.clearOfAgents(point, radius, null));
             if (place == null) {
                 refuse(session, seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent");
                 return;
@@ -156,7 +163,8 @@ final class Registrations {
         Vec3 place = saved.position();
         double radius = saved.body().radius();
         if (!world.checkPlace(place.onGround(), radius).isFree() || !walking.clearOfAgents(place, radius, null)) {
-            place = placeFor(saved.name(), radius, placing(saved.name()));
+            place = placeFor(saved.name(), radius, placing(saved.name()),
+                    (point, r) -> walking.clearOfAgents(point, r, null));
             if (place == null) {
                 refuse(session, seq, ErrorCode.TOO_MANY_AGENTS, "no free place left for another agent");
                 return false;
@@ -171,12 +179,12 @@ final class Registrations {
     }
 
     private void enter(ClientSession session, long seq, Agent agent) {
-        agent.joined = ++joins;
         agents.put(agent.name, agent);
         walking.agentsChanged();
         scores.join(agent.name);
-        outbox.send(session, new RegisteredMessage(seq, agent.name, agent.body, agent.position, agent.heading,
-                agent.resumeToken));
+        RegisteredMessage registered = new RegisteredMessage(seq, agent.name, agent.body, agent.position,
+                agent.heading, agent.resumeToken, AgentSeed.of(seed, agent.name));
+        outbox.send(session, session.protocolVersion() >= 2 ? registered : registered.withoutSeed());
         outbox.broadcast(new AgentAddedMessage(outbox.tick(), agent.state()), Audience.VIEWERS);
         listeners.forEach(l -> l.agentJoined(agent.name));
     }
@@ -187,22 +195,48 @@ final class Registrations {
 
     /**
      * The draws that place an agent and turn it at first, from the game's seed and the agent's name
-     * alone: an agent starts where it started in any other game of the seed, whichever joined first.
+     * alone: an agent starts where it started in any other game of the seed with the same agents,
+     * whichever joined first.
      */
     private RandomGenerator placing(String name) {
         return new SplittableRandom(seed ^ (name.hashCode() * 0x9E3779B97F4A7C15L) ^ 0x5DEECE66DL);
     }
 
-    /** A free place for a body of this radius: the placement's, or drawn from the game's seed and the name. */
-    private Vec3 placeFor(String name, double radius, RandomGenerator draws) {
+    /**
+     * At the start of the game: each agent, in the order of the names, that touches an agent of an
+     * earlier name moves to its next free place (viewers see it jump there; the agent learns it from
+     * its first perception). The places then depend on the seed and the names alone.
+     */
+    void settle() {
+        List<Agent> settled = new ArrayList<>();
+        BiPredicate<Vec3, Double> clear = (point, radius) -> settled.stream()
+                .allMatch(other -> other.position.groundDistance(point) >= radius + other.body.radius());
+        for (Agent agent : agents.values()) {
+            if (!clear.test(agent.position, agent.body.radius())) {
+                Vec3 place = placeFor(agent.name, agent.body.radius(), placing(agent.name), clear);
+                if (place != null) {
+                    outbox.broadcast(new AgentMovedMessage(outbox.tick(), agent.name, agent.position, place,
+                            outbox.time(), 0), Audience.VIEWERS);
+                    agent.position = place;
+                }
+            }
+            settled.add(agent);
+        }
+        walking.agentsChanged();
+    }
+
+    /**
+     * A free place for a body of this radius, {@code clear} of the agents it must not touch: the
+     * placement's, or drawn from the game's seed and the name.
+     */
+    private Vec3 placeFor(String name, double radius, RandomGenerator draws, BiPredicate<Vec3, Double> clear) {
         Vec3 wanted = placement.placeFor(name, radius);
-        if (wanted != null && world.checkPlace(wanted.onGround(), radius).isFree()
-                && walking.clearOfAgents(wanted, radius, null)) {
+        if (wanted != null && world.checkPlace(wanted.onGround(), radius).isFree() && clear.test(wanted, radius)) {
             return Vec3.ground(wanted.x(), wanted.z());
         }
         for (int attempt = 0; attempt < 500; attempt++) {
             Vec3 candidate = world.randomFreePoint(draws, radius + 0.1);
-            if (candidate != null && walking.clearOfAgents(candidate, radius, null)) {
+            if (candidate != null && clear.test(candidate, radius)) {
                 return candidate;
             }
         }

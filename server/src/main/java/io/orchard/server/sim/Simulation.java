@@ -4,6 +4,7 @@ import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.GameControlMessage;
@@ -41,7 +42,8 @@ import java.util.function.Consumer;
  *
  * <p>It hands each part its share: what clients send and the clock to the {@link Outbox}, agents
  * entering and leaving to {@link Registrations}, every other message about an agent to
- * {@link Actions}, the phase to the {@link Game}.
+ * {@link Actions}, the phase to the {@link Game}, and in lockstep, whose turn is awaited and who
+ * missed theirs to the {@link Turns}.
  */
 public final class Simulation implements Inbox {
 
@@ -65,6 +67,7 @@ public final class Simulation implements Inbox {
     private final Grasps grasps;
     private final Walking walking;
     private final CheckpointRequests checkpoints = new CheckpointRequests();
+    private final Turns turns = new Turns();
 
     public Simulation(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
                       List<GameListener> listeners) {
@@ -80,7 +83,7 @@ public final class Simulation implements Inbox {
         this.serverVersion = serverVersion;
         this.listeners = List.copyOf(listeners);
         this.outbox = new Outbox(recorder);
-        this.game = new Game(world, config, seed, scores, outbox, this.listeners);
+        this.game = new Game(world, config, seed, scores, outbox, this.listeners, this::beforeStart);
         this.walking = new Walking(agents, config.bodyLimits().maxRadius(), outbox);
         this.grasps = new Grasps(world, agents, scores, outbox, this.listeners);
         this.registrations = new Registrations(world, config, seed, placement, agents, scores, walking, game, outbox,
@@ -141,6 +144,9 @@ public final class Simulation implements Inbox {
 
     void applyBuffered(List<Event> events) {
         apply(events);
+        if (game.startDue() && turns.notSetUp(agentSessions()).isEmpty()) {
+            game.start();
+        }
         outbox.flush();
         checkpoints.applied(game.phase(), this::checkpoint);
     }
@@ -151,6 +157,9 @@ public final class Simulation implements Inbox {
             return;
         }
         long tick = outbox.tick();
+        if (lockstep()) {
+            turns.began(agentSessions());
+        }
         outbox.broadcast(new TickMessage(tick, outbox.time()), Audience.ALL);
         AgentGrid crowd = null;
         for (Agent agent : agents.values()) {
@@ -182,6 +191,10 @@ public final class Simulation implements Inbox {
         boolean scored = false;
         if (game.running()) {
             long tick = outbox.tick();
+            if (lockstep()) {
+                List<Long> present = agentSessions();
+                turns.ended(tick, events, present).forEach((id, kind) -> missed(id, tick, kind));
+            }
             boolean collected = grasps.resolve(tick, outbox.time());
             double time = (tick + 1) * config.tickSeconds();
             outbox.at(tick, time);
@@ -202,11 +215,13 @@ public final class Simulation implements Inbox {
 
     private void apply(List<Event> events) {
         for (Event event : EventOrder.inClientOrder(events, agents.values())) {
+            outbox.from(event.session());
             if (event instanceof Event.Task task) {
                 task.action().run();
             } else if (event instanceof Event.Connected connected) {
                 join(connected.session());
             } else if (event instanceof Event.Disconnected gone) {
+                turns.forget(gone.session().id());
                 if (outbox.leave(gone.session())) {
                     registrations.leave(gone.session(), gone.reason());
                 }
@@ -215,14 +230,16 @@ public final class Simulation implements Inbox {
                 handle(received.session(), received.message());
             }
         }
+        outbox.from(null);
     }
 
+    /** A viewer catches up with the game: not recorded, as the record holds the game already. */
     private void join(ClientSession session) {
         outbox.join(session);
         if (session.role() == Role.VIEWER) {
-            outbox.send(session, snapshot());
+            outbox.catchUp(session, snapshot());
             for (Agent agent : agents.values()) {
-                outbox.send(session, new AgentAddedMessage(outbox.tick(), agent.state()));
+                outbox.catchUp(session, new AgentAddedMessage(outbox.tick(), agent.state()));
             }
         }
     }
@@ -237,8 +254,57 @@ public final class Simulation implements Inbox {
             route(session, instruction);
         } else if (message instanceof AgentMessage action) {
             actions.act(session, message.seq(), action, game.phase());
+        } else if (message instanceof EndTurnMessage && game.phase() == Phase.WAITING
+                && agents.values().stream().anyMatch(a -> a.owner == session)) {
+            turns.setupEnded(session.id());
         }
-        // EndTurn matters only to the tick loop; a second Hello is refused by the network layer.
+        // A tick's EndTurn matters to the tick loop; a second Hello is refused by the network layer.
+    }
+
+    /**
+     * The start of a lockstep game is due ({@link #startDue()}) but these agents' clients have not
+     * ended their setup turns in time: they are recorded as missed, and the game starts without them.
+     */
+    void startWithoutSetup() {
+        if (!game.startDue()) {
+            return;
+        }
+        for (Long id : turns.notSetUp(agentSessions())) {
+            missed(id, outbox.tick(), MissedTurn.Kind.SETUP);
+        }
+        turns.setupMissed(turns.notSetUp(agentSessions()));
+        game.start();
+        outbox.flush();
+    }
+
+    /** Whether a lockstep game has its agents and starts once their setup turns are over. */
+    boolean startDue() {
+        return game.startDue();
+    }
+
+    /** Just before the game starts: where the agents stand is settled in the order of their names. */
+    private void beforeStart() {
+        registrations.settle();
+    }
+
+    /** Records a turn the game went on without, and tells the listeners. */
+    private void missed(long session, long tick, MissedTurn.Kind kind) {
+        ClientSession client = null;
+        List<String> names = new ArrayList<>();
+        for (Agent agent : agents.values()) {
+            if (agent.owner.id() == session) {
+                client = agent.owner;
+                names.add(agent.name);
+            }
+        }
+        if (client == null) {
+            return;
+        }
+        MissedTurn missed = new MissedTurn(tick, names, kind);
+        outbox.from(client);
+        outbox.missed(client, missed);
+        outbox.from(null);
+        listeners.forEach(l -> l.turnMissed(missed));
     }
 
     /** An instruction goes to the connection that drives the agent it names. */
@@ -309,6 +375,9 @@ public final class Simulation implements Inbox {
         checkpoint.scores().forEach(scores::restore);
         registrations.restore(checkpoint.agents());
         game.restore(checkpoint.gamePhase(), checkpoint.fruitAtStart(), !registrations.waiting().isEmpty());
+        if (game.phase() != Phase.WAITING) {
+            outbox.release(); // it started long ago: nothing to hold until the start
+        }
         checkpoints.restored(game.phase());
     }
 
@@ -363,9 +432,22 @@ public final class Simulation implements Inbox {
         return scores.ranking();
     }
 
-    /** Sessions that drive at least one agent: the ones lockstep waits for. */
+    /** Sessions that drive at least one agent, in the order of their agents' names. */
     List<Long> agentSessions() {
-        return agents.values().stream().map(a -> a.owner.id()).distinct().sorted().toList();
+        return agents.values().stream().map(a -> a.owner.id()).distinct().toList();
+    }
+
+    /** The clients whose turns this lockstep tick waits for: those of agents, except the late ones. */
+    List<Long> turnsToWaitFor() {
+        return turns.waitFor();
+    }
+
+    /**
+     * Writes out what the record held back while the game waited to start. Call once the
+     * simulation's thread has stopped, before the recorder is closed.
+     */
+    public void stopped() {
+        outbox.release();
     }
 
     boolean lockstep() {

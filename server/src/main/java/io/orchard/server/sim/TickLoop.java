@@ -12,9 +12,12 @@ import org.slf4j.LoggerFactory;
  * The thread that owns the simulation and drives its clock. In realtime mode ticks are due on a
  * fixed wall-clock schedule (20 a second by default) and what arrives late waits for the next; in
  * lockstep mode a tick ends as soon as every client that drives an agent has ended its turn, or
- * when the deadline passes. While no game runs it applies what clients send as it comes. It
- * measures how long each tick works ({@link #stats()}). Its time is a {@link LoopClock}, the system's
- * in a server, so that tests step it without waiting.
+ * when the deadline passes ({@link SimulationConfig#lockstepDeadline()}; a client that misses it
+ * several times in a row is no longer waited for, see {@link Turns}). While no game runs it applies
+ * what clients send as it comes; a lockstep game whose agents have come starts when their setup
+ * turns are over, or when the deadline passes. It measures how long each tick works
+ * ({@link #stats()}). Its time is a {@link LoopClock}, the system's in a server, so that tests step
+ * it without waiting.
  */
 public final class TickLoop implements Runnable {
 
@@ -30,6 +33,8 @@ public final class TickLoop implements Runnable {
     /** When the next realtime tick is due (on the clock); reset when ticks start passing again. */
     private long due;
     private boolean wasRunning;
+    /** When a due lockstep start stops waiting for setup turns (on the clock); -1 when none is due. */
+    private long startDeadline = -1;
 
     /** A loop on the system's clock. */
     public TickLoop(Simulation sim) {
@@ -85,7 +90,23 @@ public final class TickLoop implements Runnable {
     }
 
     private void idle() throws InterruptedException {
-        Event first = sim.poll(clock, 50);
+        long wait = 50;
+        if (sim.startDue()) {
+            long now = clock.nanoTime();
+            if (startDeadline < 0) {
+                startDeadline = now + sim.config().lockstepDeadline().toNanos();
+            }
+            long left = startDeadline - now;
+            if (left <= 0) {
+                startDeadline = -1;
+                sim.startWithoutSetup();
+                return;
+            }
+            wait = Math.min(wait, Math.max(1, left / 1_000_000));
+        } else {
+            startDeadline = -1;
+        }
+        Event first = sim.poll(clock, wait);
         List<Event> events = new ArrayList<>();
         if (first != null) {
             events.add(first);
@@ -134,8 +155,8 @@ public final class TickLoop implements Runnable {
     private void collectUntilTurnsEnd(long tick, List<Event> events) throws InterruptedException {
         long deadline = clock.nanoTime() + sim.config().lockstepDeadline().toNanos();
         // Who drives an agent cannot change before the end of the tick (registrations take effect
-        // then), except by leaving.
-        Set<Long> waiting = new HashSet<>(sim.agentSessions());
+        // then), except by leaving. Late clients are not waited for.
+        Set<Long> waiting = new HashSet<>(sim.turnsToWaitFor());
         boolean anyone = !waiting.isEmpty();
         while (!stopped) {
             if (anyone && waiting.isEmpty()) {

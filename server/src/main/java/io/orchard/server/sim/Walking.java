@@ -59,7 +59,10 @@ final class Walking {
         return new Contact(nearest.first, new Vec3(from.x() + dx / length * travel, 0, from.z() + dz / length * travel));
     }
 
-    /** The agent a walker meets first along its segment; ties go to the agent that joined first. */
+    /**
+     * The agent a walker meets first along its segment; ties go to the earlier name, as agents are
+     * applied in the order of their names, whichever joined first.
+     */
     private static final class Nearest implements java.util.function.Consumer<Agent> {
         private final Agent mover;
         private final Vec3 from;
@@ -83,7 +86,7 @@ final class Walking {
                 return;
             }
             double t = entry(from, dx, dz, length, other.position, mover.body.radius() + other.body.radius());
-            if (t < firstT || (t == firstT && t != Double.MAX_VALUE && other.joined < first.joined)) {
+            if (t < firstT || (t == firstT && t != Double.MAX_VALUE && other.name.compareTo(first.name) < 0)) {
                 firstT = t;
                 first = other;
             }

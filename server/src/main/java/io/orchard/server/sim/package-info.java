@@ -11,6 +11,9 @@
  * knows it. Everything said goes through the outbox (sessions, recording, the current tick and
  * time); agents register and leave through the registrations (names, resume tokens, where and in what
  * order agents enter); every other message about an agent is an action; the game keeps the phase.
- * The order in which a tick's messages are applied is the event order's.
+ * The order in which a tick's messages are applied is the event order's; in lockstep, whose turn a
+ * tick waits for, and who missed theirs, is the turns'. A lockstep game played again by the same
+ * agents gives the same record, byte for byte: see {@link io.orchard.server.sim.Recorder} and
+ * {@link io.orchard.server.sim.MissedTurn}.
  */
 package io.orchard.server.sim;

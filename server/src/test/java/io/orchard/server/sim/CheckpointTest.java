@@ -2,6 +2,7 @@ package io.orchard.server.sim;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
@@ -48,12 +49,12 @@ class CheckpointTest {
     private Simulation simulation(World world) {
         Recorder recorder = new Recorder() {
             @Override
-            public void accepted(long tick, double time, long session, Message message) {
+            public void accepted(long tick, double time, String client, Message message) {
                 recorded.add(message);
             }
 
             @Override
-            public void sent(long tick, double time, Audience to, long session, Message message) {
+            public void sent(long tick, double time, Audience to, String client, Message message) {
                 recorded.add(message);
             }
 
@@ -73,6 +74,7 @@ class CheckpointTest {
         sim.received(agents, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null));
         sim.received(agents, new RegisterMessage(++seq, "Bunny", TestWorlds.BODY, null));
         sim.received(agents, new RegisterJointMessage(++seq, "Guppy", "LeftKnee"));
+        sim.received(agents, new EndTurnMessage(++seq, 0)); // the setup turn: the game starts
         sim.applyNow();
         List<RegisteredMessage> registered = agents.all(RegisteredMessage.class);
         guppyToken = registered.get(0).resumeToken();

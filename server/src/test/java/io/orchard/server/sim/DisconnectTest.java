@@ -6,6 +6,7 @@ import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.FruitEatenMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
 import io.orchard.protocol.message.GraspResultMessage;
@@ -58,8 +59,10 @@ class DisconnectTest {
         register(bunny, "Bunny");
     }
 
+    /** Registers an agent and ends the setup turn (the first starts the game). */
     private RegisteredMessage register(FakeSession session, String name) {
         sim.received(session, new RegisterMessage(++seq, name, TestWorlds.BODY, null));
+        sim.received(session, new EndTurnMessage(++seq, 0));
         sim.applyNow();
         return session.last(RegisteredMessage.class);
     }

@@ -1,5 +1,6 @@
 package io.orchard.server.sim;
 
+import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
@@ -13,6 +14,7 @@ final class FakeSession implements ClientSession {
     private final Role role;
     final List<ServerMessage> received = new ArrayList<>();
     boolean open = true;
+    int version = ProtocolVersion.CURRENT;
 
     FakeSession(long id, Role role) {
         this.id = id;
@@ -27,6 +29,11 @@ final class FakeSession implements ClientSession {
     @Override
     public Role role() {
         return role;
+    }
+
+    @Override
+    public int protocolVersion() {
+        return version;
     }
 
     @Override

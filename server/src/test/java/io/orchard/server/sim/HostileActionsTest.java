@@ -3,6 +3,7 @@ package io.orchard.server.sim;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
@@ -41,6 +42,7 @@ class HostileActionsTest {
         agents = new FakeSession(1, Role.AGENT);
         sim.connected(agents);
         sim.received(agents, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null));
+        sim.received(agents, new EndTurnMessage(++seq, 0)); // the setup turn: the game starts
         sim.applyNow();
     }
 

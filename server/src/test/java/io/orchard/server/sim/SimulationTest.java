@@ -7,6 +7,7 @@ import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.CastlePerceptionMessage;
+import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.FruitEatenMessage;
@@ -72,8 +73,10 @@ class SimulationTest {
         sim.applyNow();
     }
 
+    /** Registers an agent and ends the setup turn, which starts a lockstep game that waits for nobody else. */
     private void register(String name, Body body) {
         sim.received(agents, new RegisterMessage(++seq, name, body, null));
+        sim.received(agents, new EndTurnMessage(++seq, 0));
         sim.applyNow();
     }
 
@@ -120,6 +123,25 @@ class SimulationTest {
         assertThat(viewer.last(AgentAddedMessage.class).agent().name()).isEqualTo("Guppy");
         assertThat(agents.last(GameStartedMessage.class).seed()).isEqualTo(7);
         assertThat(sim.phase()).isEqualTo(Phase.RUNNING);
+    }
+
+    @Test
+    void eachAgentGetsItsOwnSeedFromTheGamesSeedAndItsNameAndVersion1ClientsGetNone() {
+        FakeSession old = new FakeSession(3, Role.AGENT);
+        old.version = 1;
+        sim.connected(old);
+        register("Guppy", TestWorlds.BODY);
+        register("Bunny", TestWorlds.BODY);
+        sim.received(old, new RegisterMessage(++seq, "Carrot", TestWorlds.BODY, null));
+        sim.applyNow();
+
+        List<RegisteredMessage> registered = agents.all(RegisteredMessage.class);
+        assertThat(registered.get(0).seed()).isEqualTo(AgentSeed.of(7, "Guppy")).isNotEqualTo(7L);
+        assertThat(registered.get(1).seed()).isEqualTo(AgentSeed.of(7, "Bunny")).isNotEqualTo(registered.get(0).seed());
+        assertThat(old.last(RegisteredMessage.class).seed()).isNull();
+        assertThat(AgentSeed.of(8, "Guppy")).isNotEqualTo(AgentSeed.of(7, "Guppy"));
+        // The documented derivation, so that any language can check it: SHA-256 of "orchard-agent-seed:7:Guppy".
+        assertThat(AgentSeed.of(7, "Guppy")).isEqualTo(0x1E5B2B936DBD5C93L);
     }
 
     @Test

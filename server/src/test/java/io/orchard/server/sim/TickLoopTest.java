@@ -3,6 +3,7 @@ package io.orchard.server.sim;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.protocol.message.EndTurnMessage;
+import io.orchard.protocol.message.PerceptionRequestMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Role;
@@ -18,21 +19,29 @@ class TickLoopTest {
     private final FakeLoopClock clock = new FakeLoopClock();
     private final FakeSession client = new FakeSession(1, Role.AGENT);
     private final List<GameListener> listeners = new ArrayList<>();
+    private final List<MissedTurn> missed = new ArrayList<>();
     private Simulation sim;
     private TickLoop loop;
 
     /** A game of 20 ticks a second (50 ms each) with a lockstep deadline of one second. */
     private void game(ClockMode mode, int waitFor) {
+        listeners.add(new GameListener() {
+            @Override
+            public void turnMissed(MissedTurn turn) {
+                missed.add(turn);
+            }
+        });
         sim = new Simulation(TestWorlds.small(), new SimulationConfig(20, mode, 30, waitFor, Duration.ofSeconds(1), 8,
                 BodyLimits.DEFAULT), 7, "test", Recorder.NONE, listeners, (name, radius) -> Vec3.ground(0, 0));
         loop = new TickLoop(sim, clock);
         sim.connected(client);
     }
 
-    /** Registers Guppy, which starts the game. */
+    /** Registers Guppy and ends its setup turn, which starts the game. */
     private void running(ClockMode mode) throws InterruptedException {
         game(mode, 0);
         sim.received(client, new RegisterMessage(1, "Guppy", TestWorlds.BODY, null));
+        sim.received(client, new EndTurnMessage(2, 0));
         loop.step();
         assertThat(sim.phase()).isEqualTo(Phase.RUNNING);
     }
@@ -117,5 +126,68 @@ class TickLoopTest {
         loop.step();
         assertThat(sim.tick()).isEqualTo(2);
         assertThat(clock.millis()).isEqualTo(1000);
+    }
+
+    @Test
+    void aLockstepGameStartsWhenItsAgentsHaveEndedTheirSetupTurns() throws InterruptedException {
+        game(ClockMode.LOCKSTEP, 0);
+        sim.received(client, new RegisterMessage(1, "Guppy", TestWorlds.BODY, null));
+        loop.step();
+        assertThat(sim.phase()).as("registered, its setup not over").isEqualTo(Phase.WAITING);
+        sim.received(client, new PerceptionRequestMessage(2, "Guppy", 1));
+        sim.received(client, new EndTurnMessage(3, 0));
+        loop.step();
+        assertThat(sim.phase()).isEqualTo(Phase.RUNNING);
+        assertThat(sim.tick()).as("the setup was applied before tick 0").isZero();
+        assertThat(missed).isEmpty();
+        assertThat(clock.millis()).isZero();
+    }
+
+    @Test
+    void aLockstepGameStartsWithoutASetupTurnThatMissesTheDeadlineAndRecordsIt() throws InterruptedException {
+        game(ClockMode.LOCKSTEP, 0);
+        sim.received(client, new RegisterMessage(1, "Guppy", TestWorlds.BODY, null));
+        loop.step();
+        while (sim.phase() == Phase.WAITING) {
+            loop.step(); // nothing comes
+        }
+        assertThat(clock.millis()).isEqualTo(1000);
+        assertThat(missed).containsExactly(new MissedTurn(0, List.of("Guppy"), MissedTurn.Kind.SETUP));
+    }
+
+    @Test
+    void aClientThatMissesThreeTurnsInARowIsNoLongerWaitedForUntilItIsInTimeAgain() throws InterruptedException {
+        game(ClockMode.LOCKSTEP, 2);
+        FakeSession slow = new FakeSession(2, Role.AGENT);
+        sim.connected(slow);
+        sim.received(client, new RegisterMessage(1, "Guppy", TestWorlds.BODY, null));
+        sim.received(slow, new RegisterMessage(1, "Sloth", TestWorlds.BODY, null));
+        sim.received(client, new EndTurnMessage(2, 0));
+        sim.received(slow, new EndTurnMessage(2, 0));
+        loop.step();
+        assertThat(sim.phase()).isEqualTo(Phase.RUNNING);
+
+        for (long tick = 0; tick < 5; tick++) { // Sloth says nothing
+            sim.received(client, new EndTurnMessage(10 + tick, tick));
+            loop.step();
+        }
+        assertThat(sim.tick()).isEqualTo(5);
+        assertThat(clock.millis()).as("three ticks waited for Sloth until the deadline, then none").isEqualTo(3000);
+        assertThat(missed).extracting(MissedTurn::tick, MissedTurn::kind).containsExactly(
+                org.assertj.core.groups.Tuple.tuple(0L, MissedTurn.Kind.DEADLINE),
+                org.assertj.core.groups.Tuple.tuple(1L, MissedTurn.Kind.DEADLINE),
+                org.assertj.core.groups.Tuple.tuple(2L, MissedTurn.Kind.DEADLINE),
+                org.assertj.core.groups.Tuple.tuple(3L, MissedTurn.Kind.LATE),
+                org.assertj.core.groups.Tuple.tuple(4L, MissedTurn.Kind.LATE));
+        assertThat(missed).allSatisfy(m -> assertThat(m.agents()).containsExactly("Sloth"));
+
+        sim.received(slow, new EndTurnMessage(20, 5)); // in time again
+        sim.received(client, new EndTurnMessage(21, 5));
+        loop.step();
+        sim.received(client, new EndTurnMessage(22, 6));
+        loop.step(); // tick 6: Sloth is waited for again
+        assertThat(clock.millis()).isEqualTo(4000);
+        assertThat(missed).hasSize(6).last().extracting(MissedTurn::tick, MissedTurn::kind)
+                .containsExactly(6L, MissedTurn.Kind.DEADLINE);
     }
 }
