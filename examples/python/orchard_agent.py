@@ -2,8 +2,10 @@
 """A complete Orchard agent in Python 3, standard library only, written from docs/protocol.md.
 
 It registers, perceives every few ticks, walks to the nearest fruit its gripper can reach, faces
-it and grasps it; when it sees none it wanders. It ends its turn on every tick, so it plays in
-both realtime and lockstep games.
+it and grasps it; when it sees none it wanders. It plays in both realtime and lockstep games. In
+lockstep it ends its setup with EndTurn, acts only on the perception of the tick whose turn is
+open and then ends that turn, and draws its random numbers from the seed the server gives it:
+the same seed and agents then play the same game again.
 
     python3 orchard_agent.py --host localhost --port 7557 --name Pyro
 """
@@ -126,13 +128,16 @@ def main():
     args = parser.parse_args()
 
     c = Connection(args.host, args.port)
-    c.send({"type": "Hello", "protocolVersion": 1, "role": "agent", "client": "orchard_agent.py"})
+    c.send({"type": "Hello", "protocolVersion": 2, "role": "agent", "client": "orchard_agent.py"})
     welcome = c.receive()
     if welcome["type"] != "Welcome":
         sys.exit("refused: " + welcome.get("text", str(welcome)))
+    lockstep = welcome["clock"] == "lockstep"
+    open_turn = None        # lockstep: the tick whose perception we wait for before ending its turn
+    next_perception = None  # the tick of our next perception, once the first one came
     c.send({"type": "Register", "name": args.name, "body": BODY})
     agent = Agent(c, args.name, args.seed)
-    tick = 0
+    tick = welcome["tick"]
     while True:
         m = c.receive()
         if m is None:
@@ -142,16 +147,32 @@ def main():
             agent.position = m["position"]
             agent.heading = m["heading"]
             agent.body = m["body"]
+            if m.get("seed") is not None:
+                agent.random = random.Random(m["seed"])  # our own seed, from the game's seed and our name
             c.send({"type": "PerceptionRequest", "agent": args.name, "every": PERCEIVE_EVERY})
+            if lockstep:
+                c.send({"type": "EndTurn", "tick": tick})  # the setup turn: the game starts when all are set up
         elif kind == "Error":
             print("error:", m["code"], m["text"], file=sys.stderr)
             if m["code"] in ("name_in_use", "wrong_role", "too_many_agents"):
                 sys.exit(1)
         elif kind == "Tick":
             tick = m["tick"]
-            c.send({"type": "EndTurn", "tick": tick})
+            if lockstep and next_perception == tick:
+                open_turn = tick  # our perception follows: act on it, then end the turn
+            else:
+                c.send({"type": "EndTurn", "tick": tick})
         elif kind == "Perception" and m["agent"] == args.name:
-            agent.on_perception(m, tick)
+            next_perception = m["tick"] + PERCEIVE_EVERY
+            if not lockstep or open_turn == m["tick"]:
+                agent.on_perception(m, tick)
+            else:
+                # The turn was already over: acting now would count in whichever tick it arrived.
+                agent.position = m["position"]
+                agent.heading = m["heading"]
+            if open_turn == m["tick"]:
+                c.send({"type": "EndTurn", "tick": tick})
+                open_turn = None
         elif kind == "ActionResult" and m.get("agent") == args.name:
             agent.on_result(m, tick)
         elif kind == "GraspResult" and m["agent"] == args.name:

@@ -59,7 +59,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.SplittableRandom;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutionException;
@@ -98,7 +97,8 @@ import org.slf4j.LoggerFactory;
  *   <li>reads the agent's model from its resources and checks it: a Transform named after the
  *       agent, and the nodes of its joints and time sensors ({@link AgentModel#check});
  *   <li>connects, registers the body with the model, then its joints and time sensors, and asks
- *       for a perception every tick ({@link AgentBody#perceptionEvery()});
+ *       for a perception every tick ({@link AgentBody#perceptionEvery()}), and in lockstep mode ends
+ *       its setup turn ({@code EndTurn}): the game starts when every agent's setup is over;
  *   <li>on each tick: waits for that tick's perception when one is due, adds it to the memory,
  *       calls {@link #onTick} and {@link #decide}, and in lockstep mode ends the turn for that
  *       tick ({@code EndTurn}); actions sent in {@code decide} are applied at the end of the tick;
@@ -127,7 +127,7 @@ public abstract class AgentController {
     private final Motor motor = new ControllerMotor(this);
     private final Tally counters = new Tally();
     private final Throttle throttle = new Throttle(Throttle.RATE, Throttle.BURST);
-    private final RandomGenerator random;
+    private final AgentRandom random;
     private volatile ProtocolConnection connection;
     private volatile AgentStats stats = AgentStats.NONE;
     private volatile boolean stopping;
@@ -176,7 +176,7 @@ public abstract class AgentController {
      */
     protected AgentController(String name) {
         this.name = Checks.name(name, "agent name");
-        this.random = new SplittableRandom(name.hashCode() * 0x9E3779B97F4A7C15L);
+        this.random = new AgentRandom(name.hashCode() * 0x9E3779B97F4A7C15L);
     }
 
     // ---- the lifecycle: public and final -----------------------------------------------------
@@ -419,7 +419,10 @@ public abstract class AgentController {
         return welcome;
     }
 
-    /** Random numbers, seeded from the agent's name so that lockstep games repeat. */
+    /**
+     * Random numbers: from the agent's own seed, which the server derives from the game's seed and the
+     * agent's name, once registered (before, from the name), so that lockstep games repeat.
+     */
     protected final RandomGenerator random() {
         return random;
     }
@@ -757,7 +760,15 @@ public abstract class AgentController {
             send(s -> new RegisterTimeSensorMessage(s, name, sensor));
         }
         requestPerception(plan.perceptionEvery());
+        if (registered.seed() != null) {
+            random.reseed(registered.seed());
+        }
         guarded(this::onRegistered);
+        if (welcome.clock() == ClockMode.LOCKSTEP) {
+            // The setup turn: a lockstep game starts once every agent's setup is over.
+            long setup = Math.max(tick, welcome.tick());
+            send(s -> new EndTurnMessage(s, setup));
+        }
     }
 
     private void tick(TickMessage t) {
@@ -774,7 +785,10 @@ public abstract class AgentController {
             pendingPerception = null;
             pendingLandmarks = null;
         }
-        if (schedule.expect(tick) == PerceptionSchedule.Expect.NO) {
+        PerceptionSchedule.Expect expect = schedule.expect(tick);
+        // In lockstep, waiting a while for a perception that may come would let the wall clock decide.
+        if (expect == PerceptionSchedule.Expect.NO
+                || (expect == PerceptionSchedule.Expect.MAYBE && welcome.clock() == ClockMode.LOCKSTEP)) {
             turn(null);
         }
     }
@@ -782,7 +796,7 @@ public abstract class AgentController {
     private long waitMillis() {
         boolean lockstep = welcome.clock() == ClockMode.LOCKSTEP;
         if (schedule.expect(tick) == PerceptionSchedule.Expect.YES) {
-            return lockstep ? 1000 : Math.max(5, 500 / welcome.tickRate());
+            return lockstep ? Long.MAX_VALUE : Math.max(5, 500 / welcome.tickRate()); // it comes with the Tick
         }
         return lockstep ? 50 : Math.max(5, 500 / welcome.tickRate());
     }

@@ -2,6 +2,8 @@ package io.orchard.examples;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.agents.AgentController;
+import io.orchard.agents.zoo.Species;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.WorldServer;
@@ -42,6 +44,36 @@ class PythonAgentTest {
                 agent.destroyForcibly();
             }
         }
+    }
+
+    @Test
+    void thePythonAgentAndAJavaAgentPlayTheSameLockstepGameTwice() throws Exception {
+        Path script = Path.of("python", "orchard_agent.py").toAbsolutePath();
+        byte[] first = recordGameWithPython(script, "first.ndjson");
+        byte[] second = recordGameWithPython(script, "second.ndjson");
+
+        assertThat(new String(first, StandardCharsets.UTF_8)).doesNotContain("\"dir\":\"missed\"")
+                .contains("\"client\":\"Pyro\"", "\"client\":\"Guppy\"");
+        assertThat(second).as("the second recording, byte for byte").isEqualTo(first);
+    }
+
+    /** A 20-second lockstep game of the Python agent and Guppy, the Python agent connecting first. */
+    private byte[] recordGameWithPython(Path script, String file) throws Exception {
+        Path recording = dir.resolve(file);
+        try (WorldServer server = WorldServer.builder().port(0).seed(42).clock(ClockMode.LOCKSTEP).timeLimit(20)
+                .waitFor(2).lockstepDeadline(java.time.Duration.ofSeconds(20)).record(recording).start()) {
+            Process agent = python(script, "--port", String.valueOf(server.port()), "--name", "Pyro")
+                    .redirectErrorStream(true).redirectOutput(dir.resolve(file + ".log").toFile()).start();
+            try {
+                AgentController guppy = Species.GUPPY.create();
+                guppy.run("127.0.0.1", server.port());
+                server.gameOver().get(120, TimeUnit.SECONDS);
+                assertThat(agent.waitFor(20, TimeUnit.SECONDS)).as("the agent exits after game over").isTrue();
+            } finally {
+                agent.destroyForcibly();
+            }
+        }
+        return Files.readAllBytes(recording);
     }
 
     private static ProcessBuilder python(Path script, String... args) throws IOException {
