@@ -11,15 +11,14 @@ import org.junit.jupiter.api.condition.EnabledIfSystemProperty;
 
 /**
  * Measures the zoo for docs/agents.md: each agent alone for 180 simulated seconds on seeds 1 to
- * 10 (fruit per simulated minute, refused moves), then all five together for 300 seconds on the
- * same seeds. Takes a few minutes, so it runs only when asked:
+ * 10 (fruit per simulated minute, refused moves). The five together are measured by the
+ * tournament, whose tables docs/agents.md shows. Takes a few minutes, so it runs only when asked:
  * {@code ./mvnw -pl agents test -Dtest=ZooScores -Dorchard.scores=true}.
  */
 class ZooScores {
 
     static final int SEEDS = 10;
     static final double ALONE_SECONDS = 180;
-    static final double TOGETHER_SECONDS = 300;
 
     @Test
     @EnabledIfSystemProperty(named = "orchard.scores", matches = "true")
@@ -47,26 +46,6 @@ class ZooScores {
                     perMinute.stream().mapToDouble(d -> d).min().orElse(0),
                     perMinute.stream().mapToDouble(d -> d).max().orElse(0), points / SEEDS,
                     100.0 * refused / Math.max(1, moves)));
-        }
-        table.append("\n| seed | fruit | collected | Dwarf | Robot | Bunny | Guppy | Roadrunner | refused moves |\n"
-                + "|---|---|---|---|---|---|---|---|---|\n");
-        for (long seed = 1; seed <= SEEDS; seed++) {
-            List<AgentController> agents = new ArrayList<>();
-            for (Species species : Species.values()) {
-                agents.add(species.create());
-            }
-            Games.Result game = Games.play(seed, TOGETHER_SECONDS, agents);
-            StringBuilder row = new StringBuilder(String.format(Locale.ROOT, "| %d | %d | %d in %.0f s |", seed,
-                    game.fruitAtStart(), game.fruitEaten(), minutes(game) * 60));
-            long moves = 0;
-            long refused = 0;
-            for (AgentController agent : agents) {
-                row.append(' ').append(agent.stats().fruit()).append(" |");
-                moves += agent.stats().movesSent();
-                refused += agent.stats().obstacleRejections();
-            }
-            row.append(String.format(Locale.ROOT, " %.2f %% |%n", 100.0 * refused / Math.max(1, moves)));
-            table.append(row);
         }
         System.out.println(table);
     }

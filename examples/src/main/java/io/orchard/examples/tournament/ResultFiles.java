@@ -4,12 +4,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.stream.Collectors;
 
 /**
  * Writes a tournament's rows as results.csv (a header, then {@code game,seed,agent,fruit,points})
- * and results.json (an array of objects with the same fields). Agents' names are letters, digits,
+ * and results.json (an array of objects with the same fields and {@code missedTurns}, the lockstep
+ * turns the agent's client missed, each with its tick and kind). Agents' names are letters, digits,
  * '_' and '-' (the protocol allows no others), so neither format needs quoting.
  */
 final class ResultFiles {
@@ -28,15 +31,20 @@ final class ResultFiles {
         return Files.writeString(dir.resolve(CSV), text, StandardCharsets.UTF_8);
     }
 
-    static Path writeJson(List<Result> results, Path dir) throws IOException {
-        StringBuilder text = new StringBuilder("[\n");
-        for (int i = 0; i < results.size(); i++) {
-            Result r = results.get(i);
-            text.append(String.format(Locale.ROOT,
-                    "  {\"game\": %d, \"seed\": %d, \"agent\": \"%s\", \"fruit\": %d, \"points\": %d}%s%n", r.game(),
-                    r.seed(), r.agent(), r.fruit(), r.points(), i + 1 < results.size() ? "," : ""));
+    /** Every row, each with the turns its agent's client missed (none in a game that repeats exactly). */
+    static Path writeJson(List<Played> played, Path dir) throws IOException {
+        List<String> rows = new ArrayList<>();
+        for (Played game : played) {
+            for (Result r : game.rows()) {
+                String missed = game.missedBy(r.agent()).stream()
+                        .map(m -> String.format(Locale.ROOT, "{\"tick\": %d, \"turn\": \"%s\"}", m.tick(),
+                                m.kind().wireName()))
+                        .collect(Collectors.joining(", "));
+                rows.add(String.format(Locale.ROOT,
+                        "  {\"game\": %d, \"seed\": %d, \"agent\": \"%s\", \"fruit\": %d, \"points\": %d, "
+                                + "\"missedTurns\": [%s]}", r.game(), r.seed(), r.agent(), r.fruit(), r.points(), missed));
+            }
         }
-        text.append("]\n");
-        return Files.writeString(dir.resolve(JSON), text, StandardCharsets.UTF_8);
+        return Files.writeString(dir.resolve(JSON), "[\n" + String.join(",\n", rows) + "\n]\n", StandardCharsets.UTF_8);
     }
 }

@@ -43,8 +43,39 @@ class TournamentTest {
         assertThat(new TournamentCommand().run(List.of("--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
                 "--seed-from", "40", "--time-limit", "15", "--out", again.toString()), out, out)).isZero();
 
-        assertThat(Files.readAllLines(again.resolve("results.csv"), StandardCharsets.UTF_8))
-                .isEqualTo(Files.readAllLines(dir.resolve("results.csv"), StandardCharsets.UTF_8));
+        for (String file : List.of("results.csv", "results.json", "results.md")) {
+            assertThat(Files.readAllBytes(again.resolve(file))).as(file)
+                    .isEqualTo(Files.readAllBytes(dir.resolve(file)));
+        }
+    }
+
+    @Test
+    void theFiveAgentsPlayTheSameTwoGamesTwice(@TempDir Path first, @TempDir Path second) throws Exception {
+        String[] printed = new String[2];
+        Path[] dirs = {first, second};
+        for (int run = 0; run < 2; run++) {
+            ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+            PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+            assertThat(new TournamentCommand().run(List.of("--games", "2", "--seed-from", "8", "--time-limit", "30",
+                    "--out", dirs[run].toString()), out, out)).isZero();
+            printed[run] = bytes.toString(StandardCharsets.UTF_8);
+        }
+
+        assertThat(printed[0]).contains("Missed turns: none");
+        assertThat(Files.readAllBytes(second.resolve("results.csv")))
+                .isEqualTo(Files.readAllBytes(first.resolve("results.csv")));
+        assertThat(Files.readAllLines(first.resolve("results.csv"), StandardCharsets.UTF_8)).hasSize(1 + 2 * 5);
+    }
+
+    @Test
+    void theMarkdownHoldsARowPerGameAndOnePerAgent() throws Exception {
+        List<String> lines = Files.readAllLines(dir.resolve("results.md"), StandardCharsets.UTF_8);
+
+        assertThat(lines.get(0)).isEqualTo("| seed | fruit | collected together | Roadrunner | Bunny | FirstAgent "
+                + "| moves refused by an obstacle | missed turns |");
+        assertThat(lines.get(2)).matches("\\| 40 \\| \\d+ \\| \\d+ in \\d+ s \\| \\d+ \\| \\d+ \\| \\d+ \\| \\d+\\.\\d\\d % \\| 0 \\|");
+        assertThat(lines).contains("| agent | games | fruit per game, mean | standard deviation | fewest | most "
+                + "| points per game, mean |").anyMatch(line -> line.startsWith("| FirstAgent | 3 | "));
     }
 
     @Test
@@ -63,7 +94,8 @@ class TournamentTest {
         String json = Files.readString(dir.resolve("results.json"), StandardCharsets.UTF_8);
 
         assertThat(json.split("\"agent\"", -1)).hasSize(1 + 3 * 3);
-        assertThat(json).startsWith("[").contains("{\"game\": 3, \"seed\": 42, \"agent\": \"Bunny\", \"fruit\": ");
+        assertThat(json).startsWith("[").contains("{\"game\": 3, \"seed\": 42, \"agent\": \"Bunny\", \"fruit\": ")
+                .contains("\"missedTurns\": []");
     }
 
     @Test
@@ -93,7 +125,7 @@ class TournamentTest {
         assertThat(printed).contains("agent          games  fruit mean     sd  min  max  points mean")
                 .containsPattern("Roadrunner +3 +\\d+\\.\\d\\d")
                 .containsPattern("FirstAgent +3 +\\d+\\.\\d\\d")
-                .contains("game 3/3 (seed 42)", "100%");
+                .contains("game 3/3 (seed 42)", "100%", "Missed turns: none");
     }
 
     @Test
