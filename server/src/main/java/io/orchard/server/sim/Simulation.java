@@ -144,7 +144,7 @@ public final class Simulation implements Inbox {
 
     void applyBuffered(List<Event> events) {
         apply(events);
-        if (game.startDue() && turns.notSetUp(agentSessions()).isEmpty()) {
+        if (game.startDue() && !agents.isEmpty() && turns.notSetUp(agentSessions()).isEmpty()) {
             game.start();
         }
         outbox.flush();
