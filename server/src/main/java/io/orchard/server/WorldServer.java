@@ -5,8 +5,6 @@ import io.orchard.protocol.value.Score;
 import io.orchard.server.net.NetLimits;
 import io.orchard.server.net.NetServer;
 import io.orchard.server.sim.Checkpoint;
-import io.orchard.server.sim.CheckpointFile;
-import io.orchard.server.sim.FileRecorder;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.Placement;
@@ -17,7 +15,6 @@ import io.orchard.server.sim.TickLoop;
 import io.orchard.server.sim.TickStats;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
-import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
@@ -27,6 +24,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.stream.Collectors;
 
 /**
  * An Orchard world server that any JVM program can embed: it holds the world, runs the game and
@@ -112,7 +110,7 @@ public final class WorldServer implements AutoCloseable {
                 simulation.phase().name().toLowerCase(java.util.Locale.ROOT), simulation.time(), simulation.tick(),
                 simulation.agentNames(), simulation.waitingAgents().isEmpty() ? ""
                         : "  waiting to be resumed " + simulation.waitingAgents(),
-                simulation.fruitLeft(), simulation.ranking())));
+                simulation.fruitLeft(), scores(simulation.ranking()))));
         try {
             return status.get(5, java.util.concurrent.TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -121,6 +119,16 @@ public final class WorldServer implements AutoCloseable {
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
             return "status unavailable: " + e;
         }
+    }
+
+    /** The ranking as the status line shows it: "FirstAgent 2 points (1 fruit), Dwarf 0 points (0 fruit)". */
+    static String scores(List<Score> ranking) {
+        if (ranking.isEmpty()) {
+            return "none";
+        }
+        return ranking.stream().map(score -> score.agent() + " " + score.points()
+                + (score.points() == 1 ? " point" : " points") + " (" + score.fruit() + " fruit)")
+                .collect(Collectors.joining(", "));
     }
 
     /**
@@ -358,11 +366,11 @@ public final class WorldServer implements AutoCloseable {
          *                     port cannot be bound
          */
         public WorldServer start() throws IOException {
-            Checkpoint saved = resume != null ? CheckpointFile.read(resume) : null;
+            Checkpoint saved = resume != null ? GameFiles.checkpoint(resume) : null;
             long actualSeed = saved != null ? saved.seed()
                     : seed != null ? seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
             World world = saved != null ? World.fromScenario(saved.world())
-                    : scenario != null ? World.fromScenario(ScenarioFile.read(scenario))
+                    : scenario != null ? World.fromScenario(GameFiles.scenario(scenario))
                     : WorldGenerator.standard(actualSeed).generate();
             SimulationConfig config = saved != null
                     ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
@@ -370,7 +378,7 @@ public final class WorldServer implements AutoCloseable {
                             SimulationConfig.DEFAULT.bodyLimits())
                     : new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
                             SimulationConfig.DEFAULT.agentsPerSession(), SimulationConfig.DEFAULT.bodyLimits());
-            Recorder recorder = record != null ? FileRecorder.open(record, saved != null) : Recorder.NONE;
+            Recorder recorder = record != null ? GameFiles.recorder(record, saved != null) : Recorder.NONE;
             CompletableFuture<List<Score>> over = new CompletableFuture<>();
             List<GameListener> all = new ArrayList<>(listeners);
             all.add(new GameListener() {
@@ -399,6 +407,10 @@ public final class WorldServer implements AutoCloseable {
                 recorder.close();
                 checkpoints.close();
                 throw new IOException("interrupted while binding port " + port, e);
+            } catch (IOException e) {
+                recorder.close();
+                checkpoints.close();
+                throw e;
             } catch (RuntimeException e) {
                 recorder.close();
                 checkpoints.close();
