@@ -94,6 +94,25 @@ class ServerMainTest {
     }
 
     @Test
+    void aTakenPortIsNamedWithWhatToDoAndExitsWithOne() throws Exception {
+        try (WorldServer other = WorldServer.builder().port(0).seed(1).start()) {
+            assertThat(run("", "--port", String.valueOf(other.port()))).isEqualTo(1);
+        }
+        assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("orchard server: cannot listen on port ")
+                .contains("address already in use (is another server running? choose another with --port)");
+    }
+
+    @Test
+    void aMissingScenarioOrSavedGameIsNamedWithItsOptionAndExitsWithOne() throws Exception {
+        Path missing = dir.resolve("nonexistent.json");
+        assertThat(run("", "--port", "0", "--scenario", missing.toString())).isEqualTo(1);
+        assertThat(run("", "--port", "0", "--resume", missing.toString())).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).isEqualTo(String.join(System.lineSeparator(),
+                "orchard server: cannot read the scenario file " + missing + " (--scenario): no such file",
+                "orchard server: cannot read the checkpoint " + missing + " (--resume): no such file", ""));
+    }
+
+    @Test
     void anUnreadableCheckpointIsNamedAndExitsWithOne() throws Exception {
         Path bad = dir.resolve("bad.json");
         java.nio.file.Files.writeString(bad, "{\"format\":1}");

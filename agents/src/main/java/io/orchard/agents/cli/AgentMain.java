@@ -107,7 +107,7 @@ public final class AgentMain {
         AgentController agent = species.create(name);
         agent.addSpeechListener(text -> out.println(name + ": " + text));
         listen(console, agent::instruct);
-        out.printf(Locale.ROOT, "%s (%s) joins the game at %s:%d; type instructions for it here.%n", name,
+        out.printf(Locale.ROOT, "%s (%s) is connecting to %s:%d; type instructions for it here.%n", name,
                 species.name().toLowerCase(Locale.ROOT), host, port);
         try {
             GameOverMessage over = agent.run(host, port, options.string("token"));
@@ -142,7 +142,7 @@ public final class AgentMain {
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);
         }
         listen(console, line -> route(line, byName, out));
-        out.printf(Locale.ROOT, "%s join the game at %s:%d; instruct one with 'Name: instruction'.%n",
+        out.printf(Locale.ROOT, "%s are connecting to %s:%d; instruct one with 'Name: instruction'.%n",
                 String.join(", ", byName.values().stream().map(AgentController::name).toList()), host, port);
         ExecutorService pool = Executors.newFixedThreadPool(byName.size(), runnable -> {
             Thread thread = new Thread(runnable, "orchard-agent");

@@ -65,7 +65,10 @@ class AgentMainTest {
             int status = AgentMain.agent(List.of("--type", "bunny", "--port", "1"), console(""), print(out), print(err));
 
             assertThat(status).isEqualTo(1);
-            assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("orchard agent: ");
+            assertThat(err.toString(StandardCharsets.UTF_8))
+                    .isEqualTo("orchard agent: no server is listening at localhost:1 (connection refused)"
+                            + System.lineSeparator());
+            assertThat(out()).contains("Bunny (bunny) is connecting to localhost:1").doesNotContain("joins the game");
         }
     }
 
@@ -81,7 +84,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Gup (guppy) joins the game", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
+            assertThat(out()).contains("Gup (guppy) is connecting to 127.0.0.1:", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
                     "Game over (time limit reached). Ranking:", "1. Gup", "Gup: ");
         }
 
@@ -94,7 +97,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner join the game", "Dwarf: Stopping.",
+            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner are connecting to 127.0.0.1:", "Dwarf: Stopping.",
                     "Roadrunner: Carrying on by myself.", "Guppy: Turning left.", "Start the line with the agent's name",
                     "Game over", "Bunny: ");
         }

@@ -49,7 +49,7 @@ public final class FirstAgentCommand extends OptionsCommand {
         }
         String host = options.string("host");
         int port = options.integer("port", 1, 65535);
-        out.println(name + " joins the game at " + host + ":" + port);
+        out.println(name + " is connecting to " + host + ":" + port);
         out.flush();
         try {
             GameOverMessage over = new FirstAgent(name).run(host, port, options.string("token"));
@@ -58,8 +58,8 @@ public final class FirstAgentCommand extends OptionsCommand {
             }
             return 0;
         } catch (ConnectException e) {
-            err.println("orchard first-agent: no server at " + host + ":" + port + " (" + e.getMessage()
-                    + "); start one first, for example with ./orchard server");
+            err.println("orchard first-agent: " + e.getMessage()
+                    + "; start one first, for example with ./orchard server");
             return 1;
         } catch (IOException e) {
             err.println("orchard first-agent: " + e.getMessage());
