@@ -16,7 +16,7 @@ public record Head(Sector direction, @Nullable Double distance) implements Goal 
 
     public Head {
         Objects.requireNonNull(direction, "direction");
-        Move.checkDistance(distance);
+        RelativeMove.checkDistance(distance);
     }
 
     /** Walk on in a compass direction, as far as it goes. */

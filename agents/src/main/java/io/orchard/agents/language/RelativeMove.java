@@ -12,18 +12,18 @@ import java.util.Objects;
  * @param direction which way, relative to the agent's heading
  * @param distance  how far, in world units (a metre each), or null for a few steps
  */
-public record Move(Direction direction, @Nullable Double distance) implements Goal {
+public record RelativeMove(Direction direction, @Nullable Double distance) implements Goal {
 
     /** The longest walk one instruction may ask for: farther than across any world Orchard makes. */
     public static final double MAX_DISTANCE = 1000;
 
-    public Move {
+    public RelativeMove {
         Objects.requireNonNull(direction, "direction");
         checkDistance(distance);
     }
 
     /** Walk a few steps that way. */
-    public Move(Direction direction) {
+    public RelativeMove(Direction direction) {
         this(direction, null);
     }
 

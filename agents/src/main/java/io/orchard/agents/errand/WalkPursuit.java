@@ -10,7 +10,7 @@ import io.orchard.protocol.value.Point2;
  * where an earlier instruction was given, or on and on in a compass direction, a stretch at a
  * time, until the world's edge or something the agent cannot pass.
  */
-final class Walking implements Pursuit {
+final class WalkPursuit implements Pursuit {
 
     /** How far "go forward" or "step left" goes: a few body lengths. */
     static final double FEW_STEPS = 4;
@@ -26,7 +26,7 @@ final class Walking implements Pursuit {
     private Point2 goal;
     private String outcome = "";
 
-    private Walking(Kit kit, Point2 point, double heading, boolean backwards, String arrived) {
+    private WalkPursuit(Kit kit, Point2 point, double heading, boolean backwards, String arrived) {
         this.kit = kit;
         this.point = point;
         this.heading = heading;
@@ -35,19 +35,19 @@ final class Walking implements Pursuit {
     }
 
     /** Walks to a point and stops there. */
-    static Walking to(Kit kit, Point2 point, String arrived) {
-        return new Walking(kit, point, Double.NaN, false, arrived);
+    static WalkPursuit to(Kit kit, Point2 point, String arrived) {
+        return new WalkPursuit(kit, point, Double.NaN, false, arrived);
     }
 
     /** Walks {@code distance} in the direction of {@code heading}; backwards keeps facing the way it faces. */
-    static Walking steps(Kit kit, double heading, boolean backwards, double distance) {
+    static WalkPursuit steps(Kit kit, double heading, boolean backwards, double distance) {
         Point2 end = Bearings.ahead(kit.here(), heading, distance);
-        return new Walking(kit, end, Double.NaN, backwards, "Done: I moved.");
+        return new WalkPursuit(kit, end, Double.NaN, backwards, "Done: I moved.");
     }
 
     /** Walks on in the direction of {@code heading} as far as it can. */
-    static Walking on(Kit kit, double heading, String direction) {
-        return new Walking(kit, null, heading, false, "I've gone as far " + direction + " as I can.");
+    static WalkPursuit on(Kit kit, double heading, String direction) {
+        return new WalkPursuit(kit, null, heading, false, "I've gone as far " + direction + " as I can.");
     }
 
     @Override

@@ -12,9 +12,9 @@ import java.util.Locale;
  * world's rules (docs/agents.md): fruit lies on the ground with its centre 0.15 to 0.35 high, on
  * tables 0.85 to 1.35, and hangs in trees 1.5 to 3.0.
  */
-final class Reach {
+final class FruitHeights {
 
-    private Reach() {}
+    private FruitHeights() {}
 
     /** Heights of fruit centres in one kind of place. */
     private record Band(String where, double low, double high) {}

@@ -16,10 +16,10 @@ class ReachTest {
     void aMouthOnTheGroundCannotTakeACoconutFromATreeAndSaysWhy() {
         Reference inTree = GrounderTest.said("pick up the coconut in the tree");
 
-        assertThat(Reach.refusal(inTree, MOUTH, inTree.words())).isEqualTo(
+        assertThat(FruitHeights.refusal(inTree, MOUTH, inTree.words())).isEqualTo(
                 "I can't pick up a coconut that hangs in a tree: fruit that hangs in a tree is 1.50 to 3.00 high,"
                         + " and my mouth reaches only from 0.00 to 0.50.");
-        assertThat(Reach.refusal(inTree, CLAW, inTree.words())).isNull();
+        assertThat(FruitHeights.refusal(inTree, CLAW, inTree.words())).isNull();
     }
 
     @Test
@@ -28,8 +28,8 @@ class ReachTest {
         Reference anywhere = GrounderTest.said("pick up a coconut");
         Reference underTree = GrounderTest.said("eat the tomato under the tree");
 
-        assertThat(Reach.refusal(onTable, MOUTH, onTable.words())).contains("lies on a table is 0.85 to 1.35 high");
-        assertThat(Reach.refusal(anywhere, MOUTH, anywhere.words())).isNull();
-        assertThat(Reach.refusal(underTree, MOUTH, underTree.words())).isNull();
+        assertThat(FruitHeights.refusal(onTable, MOUTH, onTable.words())).contains("lies on a table is 0.85 to 1.35 high");
+        assertThat(FruitHeights.refusal(anywhere, MOUTH, anywhere.words())).isNull();
+        assertThat(FruitHeights.refusal(underTree, MOUTH, underTree.words())).isNull();
     }
 }
