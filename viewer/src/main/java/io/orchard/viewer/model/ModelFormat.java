@@ -7,7 +7,7 @@ import java.util.Optional;
 /**
  * The encodings an agent model may arrive in. The paper's agents were VRML97 files; X3D is their
  * XML successor and glTF the format today's tools export, so all three are accepted and give the
- * same {@link AgentModel}.
+ * same {@link BodyModel}.
  */
 public enum ModelFormat {
     /** glTF 2.0 JSON with every buffer and image embedded as a {@code data:} URI. */

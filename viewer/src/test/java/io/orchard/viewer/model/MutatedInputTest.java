@@ -28,7 +28,7 @@ class MutatedInputTest {
                 Arguments.of(ModelFormat.VRML97, TestModels.vrml(Figure5Test.FIGURE_5_VRML)),
                 Arguments.of(ModelFormat.X3D, TestModels.x3d(Figure5Test.FIGURE_5_X3D)),
                 Arguments.of(ModelFormat.GLTF, TestModels.resource("walker.gltf")),
-                Arguments.of(ModelFormat.GLB, GltfLoadingTest.walkerGlb()))
+                Arguments.of(ModelFormat.GLB, TestModels.walkerGlb()))
                 .flatMap(a -> IntStream.range(0, MUTANTS).mapToObj(seed -> Arguments.of(
                         a.get()[0], seed, mutate((byte[]) a.get()[1], seed))));
     }
@@ -37,7 +37,7 @@ class MutatedInputTest {
     @MethodSource("mutants")
     void mutatedModelLoadsOrIsRefusedCleanly(ModelFormat format, int seed, byte[] bytes) {
         try {
-            AgentModel model = TestModels.load("Guppy", format, bytes);
+            BodyModel model = TestModels.load("Guppy", format, bytes);
             model.update(0);
             model.update(1);
         } catch (ModelException e) {
