@@ -6,11 +6,11 @@ import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.scene.Geometry;
 import com.jme3.texture.Texture;
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import io.orchard.viewer.model.BodyModel;
 import io.orchard.viewer.model.BodyModels;
 import io.orchard.viewer.model.ModelException;
-import io.orchard.viewer.model.ModelFormat;
 import io.orchard.viewer.model.ModelLimits;
 import java.util.Objects;
 
@@ -47,35 +47,14 @@ public final class BodyModelLoader {
             return new Loaded(BodyModels.placeholder(name, assets), null);
         }
         try {
-            ModelFormat format;
-            byte[] bytes;
-            switch (spec.format()) {
-                case BUNDLED -> {
-                    format = ModelFormat.X3D;
-                    bytes = BundledModels.fitted(spec.bundled(), name, height).orElse(null);
-                    if (bytes == null) {
-                        return failed(name, "there is no bundled model named '" + spec.bundled()
-                                + "'; the viewer ships " + String.join(", ", BundledModels.NAMES));
-                    }
-                }
-                case GLTF -> {
-                    format = ModelFormat.GLTF;
-                    bytes = spec.bytes();
-                }
-                case GLB -> {
-                    format = ModelFormat.GLB;
-                    bytes = spec.bytes();
-                }
-                case X3D -> {
-                    format = ModelFormat.X3D;
-                    bytes = spec.bytes();
-                }
-                case VRML97 -> {
-                    format = ModelFormat.VRML97;
-                    bytes = spec.bytes();
-                }
-                default -> {
-                    return failed(name, "model format " + spec.format().wireName() + " is not one the viewer reads");
+            ModelFormat format = spec.format();
+            byte[] bytes = spec.bytes();
+            if (format == ModelFormat.BUNDLED) {
+                format = ModelFormat.X3D;
+                bytes = BundledModels.fitted(spec.bundled(), name, height).orElse(null);
+                if (bytes == null) {
+                    return failed(name, "there is no bundled model named '" + spec.bundled()
+                            + "'; the viewer ships " + String.join(", ", BundledModels.NAMES));
                 }
             }
             BodyModel model = BodyModels.load(name, format, bytes, assets, limits);

@@ -3,6 +3,7 @@ package io.orchard.viewer.model;
 import com.jme3.math.Quaternion;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException.Kind;
 import java.util.Objects;
 import java.util.Optional;

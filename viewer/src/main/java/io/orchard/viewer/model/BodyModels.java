@@ -3,6 +3,7 @@ package io.orchard.viewer.model;
 import com.jme3.asset.AssetManager;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException.Kind;
 import io.orchard.viewer.model.build.EventGraphRig;
 import io.orchard.viewer.model.build.Placeholders;
@@ -14,7 +15,7 @@ import io.orchard.viewer.model.x3d.X3dParser;
 import java.util.Objects;
 
 /**
- * Loads agent models from the bytes a client sent, in any {@link ModelFormat}, into
+ * Loads agent models from the bytes a client sent, in any file {@link ModelFormat}, into
  * {@link BodyModel}s; the replacement for the paper's VRML browser. Loading is safe on hostile
  * input: nothing outside the bytes is ever read (no files, no URLs, no XML entities), every
  * {@link ModelLimits limit} is enforced while parsing, and every failure is a
@@ -33,7 +34,7 @@ public final class BodyModels {
 
     /** {@link #load(String, ModelFormat, byte[], AssetManager, ModelLimits)} with defaults. */
     public static BodyModel load(String agentName, ModelFormat format, byte[] bytes,
-                                  AssetManager assets) throws ModelException {
+                                 AssetManager assets) throws ModelException {
         return load(agentName, format, bytes, assets, ModelLimits.DEFAULTS);
     }
 
@@ -43,7 +44,9 @@ public final class BodyModels {
      * @param agentName the name the agent registered with; the Transform (VRML97, X3D) or node
      *                  (glTF) of that name is what moves, and the paper's movement nodes are
      *                  looked up as {@code <agentName>Mover} and {@code <agentName>TSMover}
-     * @param format    the encoding, from the registration or {@link ModelFormat#detect}
+     * @param format    the file's format, from the registration or {@link ModelFormats#detect};
+     *                  {@link ModelFormat#BUNDLED} names a model rather than being one, and is
+     *                  refused
      * @param bytes     the whole file; neither modified nor kept
      * @param assets    the asset manager material definitions come from (a
      *                  {@code DesktopAssetManager(true)} works without a GL context)
@@ -52,7 +55,7 @@ public final class BodyModels {
      *                        it does not define
      */
     public static BodyModel load(String agentName, ModelFormat format, byte[] bytes,
-                                  AssetManager assets, ModelLimits limits)
+                                 AssetManager assets, ModelLimits limits)
             throws ModelException {
         Objects.requireNonNull(agentName, "agentName");
         Objects.requireNonNull(format, "format");
@@ -67,6 +70,8 @@ public final class BodyModels {
                         VrmlParser.parse(bytes, limits), assets, limits);
                 case GLTF, GLB -> fromGltf(agentName, format,
                         GltfImport.load(agentName, format, bytes, assets, limits));
+                case BUNDLED -> throw new ModelException(Kind.UNSUPPORTED, "a bundled model is"
+                        + " named, not sent: load the bundled model's own bytes (X3D) instead");
             };
         } catch (StackOverflowError e) {
             // The limits keep nesting far below this; it would take a tiny thread stack.
@@ -93,8 +98,8 @@ public final class BodyModels {
     }
 
     private static BodyModel fromDescription(String agentName, ModelFormat format,
-                                              SceneDescription scene, AssetManager assets,
-                                              ModelLimits limits) throws ModelException {
+                                             SceneDescription scene, AssetManager assets,
+                                             ModelLimits limits) throws ModelException {
         SceneBuilder.Result built = SceneBuilder.build(scene, rootName(agentName), assets,
                 limits);
         return new BodyModel(agentName, format, built.root(),

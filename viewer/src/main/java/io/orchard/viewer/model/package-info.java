@@ -4,9 +4,10 @@
  * Authoring Interface.
  *
  * <p>The rest of the viewer uses five types: {@link io.orchard.viewer.model.BodyModels} loads a
- * model from bytes in a {@link io.orchard.viewer.model.ModelFormat} (glTF, GLB, X3D or VRML97)
+ * model from bytes in one of the protocol's {@code ModelFormat}s (glTF, GLB, X3D or VRML97)
  * within {@link io.orchard.viewer.model.ModelLimits}, giving a
- * {@link io.orchard.viewer.model.BodyModel} or a {@link io.orchard.viewer.model.ModelException}.
+ * {@link io.orchard.viewer.model.BodyModel} or a {@link io.orchard.viewer.model.ModelException};
+ * {@link io.orchard.viewer.model.ModelFormats} tells a file's format from its name or first bytes.
  * The viewer maps protocol messages onto the body model's methods and calls {@code update} with
  * the simulated time each frame.
  *

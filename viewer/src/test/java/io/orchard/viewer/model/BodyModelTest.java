@@ -9,6 +9,7 @@ import com.jme3.math.Quaternion;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
+import io.orchard.protocol.value.ModelFormat;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
@@ -27,6 +28,16 @@ class BodyModelTest {
               ]
             }
             """;
+
+    @Test
+    void bundledIsRefusedAsAFormatForItNamesAModelRatherThanEncodingOne() {
+        assertThatThrownBy(() -> TestModels.load("Guppy", ModelFormat.BUNDLED,
+                TestModels.vrml(BODY_WITHOUT_MOVER)))
+                .isInstanceOf(ModelException.class)
+                .hasMessageContaining("a bundled model is named, not sent")
+                .satisfies(e -> assertThat(((ModelException) e).kind())
+                        .isEqualTo(ModelException.Kind.UNSUPPORTED));
+    }
 
     @Nested
     class Moves {

@@ -3,6 +3,7 @@ package io.orchard.viewer.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException.Kind;
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;

@@ -2,6 +2,7 @@ package io.orchard.viewer.model;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.value.ModelFormat;
 import java.util.Arrays;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;

@@ -2,6 +2,7 @@ package io.orchard.viewer.model;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.vrml.VrmlParser;
 import io.orchard.viewer.model.x3d.X3dParser;
 import java.util.stream.Stream;

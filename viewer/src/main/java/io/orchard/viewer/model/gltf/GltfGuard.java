@@ -1,9 +1,9 @@
 package io.orchard.viewer.model.gltf;
 
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.DataUriImages;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelException.Kind;
-import io.orchard.viewer.model.ModelFormat;
 import io.orchard.viewer.model.ModelLimits;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;

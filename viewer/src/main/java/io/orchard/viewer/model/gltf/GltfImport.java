@@ -7,9 +7,9 @@ import com.jme3.scene.Spatial;
 import com.jme3.scene.plugins.gltf.GlbLoader;
 import com.jme3.scene.plugins.gltf.GltfLoader;
 import com.jme3.scene.plugins.gltf.GltfModelKey;
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelException.Kind;
-import io.orchard.viewer.model.ModelFormat;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.ParseBudget;
 import java.io.ByteArrayInputStream;
@@ -27,11 +27,17 @@ public final class GltfImport {
     private GltfImport() {
     }
 
-    public static Spatial load(String agentName, ModelFormat format, byte[] bytes, AssetManager assets,
-                        ModelLimits limits) throws ModelException {
+    /**
+     * Checks a glTF or GLB model with the guard and loads it into a spatial.
+     *
+     * @throws ModelException if the guard or the loader refuses it
+     */
+    public static Spatial load(String agentName, ModelFormat format, byte[] bytes,
+                               AssetManager assets, ModelLimits limits) throws ModelException {
         ParseBudget.checkSize(bytes, limits, format.name());
         GltfGuard.check(format, bytes, limits);
-        GltfModelKey key = new GltfModelKey(agentName + "." + format.extension());
+        String extension = format == ModelFormat.GLB ? ".glb" : ".gltf";
+        GltfModelKey key = new GltfModelKey(agentName + extension);
         AssetInfo info = new AssetInfo(assets, key) {
             @Override
             public InputStream openStream() {

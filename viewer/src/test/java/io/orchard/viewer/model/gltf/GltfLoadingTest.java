@@ -10,9 +10,10 @@ import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.BodyModel;
 import io.orchard.viewer.model.ModelException;
-import io.orchard.viewer.model.ModelFormat;
+import io.orchard.viewer.model.ModelFormats;
 import io.orchard.viewer.model.TestModels;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -162,9 +163,9 @@ class GltfLoadingTest {
 
     @Test
     void formatIsDetectedFromTheBytes() {
-        assertThat(ModelFormat.detect(TestModels.resource("walker.gltf")))
+        assertThat(ModelFormats.detect(TestModels.resource("walker.gltf")))
                 .contains(ModelFormat.GLTF);
-        assertThat(ModelFormat.detect(TestModels.walkerGlb())).contains(ModelFormat.GLB);
+        assertThat(ModelFormats.detect(TestModels.walkerGlb())).contains(ModelFormat.GLB);
     }
 
 }

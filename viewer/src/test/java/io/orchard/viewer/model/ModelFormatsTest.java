@@ -2,6 +2,7 @@ package io.orchard.viewer.model;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.value.ModelFormat;
 import java.nio.charset.StandardCharsets;
 import java.util.Optional;
 import java.util.stream.Stream;
@@ -10,7 +11,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
-class ModelFormatTest {
+class ModelFormatsTest {
 
     @ParameterizedTest(name = "{0} -> {1}")
     @CsvSource(nullValues = "none", value = {
@@ -24,7 +25,7 @@ class ModelFormatTest {
         "guppy.x3dz, none",
         "guppy, none"})
     void formatIsTakenFromTheFileExtension(String fileName, ModelFormat expected) {
-        assertThat(ModelFormat.fromFileName(fileName)).isEqualTo(Optional.ofNullable(expected));
+        assertThat(ModelFormats.fromFileName(fileName)).isEqualTo(Optional.ofNullable(expected));
     }
 
     static Stream<Arguments> firstBytes() {
@@ -45,7 +46,7 @@ class ModelFormatTest {
     void formatIsDetectedFromTheFirstBytes(String text, ModelFormat expected) {
         byte[] bytes = text.getBytes(StandardCharsets.UTF_8);
 
-        assertThat(ModelFormat.detect(bytes)).isEqualTo(Optional.ofNullable(expected));
+        assertThat(ModelFormats.detect(bytes)).isEqualTo(Optional.ofNullable(expected));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -53,7 +54,7 @@ class ModelFormatTest {
         "agent.x3d| #VRML V2.0 utf8| VRML97",
         "agent.wrl| garbage| VRML97"})
     void detectedContentWinsOverTheFileName(String fileName, String text, ModelFormat expected) {
-        assertThat(ModelFormat.detect(fileName, text.getBytes(StandardCharsets.UTF_8)))
+        assertThat(ModelFormats.detect(fileName, text.getBytes(StandardCharsets.UTF_8)))
                 .contains(expected);
     }
 }

@@ -1,39 +1,26 @@
 package io.orchard.viewer.model;
 
+import io.orchard.protocol.value.ModelFormat;
 import java.nio.charset.StandardCharsets;
 import java.util.Locale;
 import java.util.Optional;
 
 /**
- * The encodings an agent model may arrive in. The paper's agents were VRML97 files; X3D is their
- * XML successor and glTF the format today's tools export, so all three are accepted and give the
- * same {@link BodyModel}.
+ * Tells which of the protocol's {@link ModelFormat}s a model file is in, from its name or from
+ * its first bytes. The paper's agents were VRML97 files; X3D is their XML successor and glTF the
+ * format today's tools export, so all of them are read and give the same {@link BodyModel}.
+ * {@link ModelFormat#BUNDLED} names one of the viewer's own models and is never a file's format.
  */
-public enum ModelFormat {
-    /** glTF 2.0 JSON with every buffer and image embedded as a {@code data:} URI. */
-    GLTF("gltf"),
-    /** Binary glTF 2.0: one file holding the JSON and its binary buffer. */
-    GLB("glb"),
-    /** X3D in its XML encoding. */
-    X3D("x3d"),
-    /** VRML97, the classic {@code #VRML V2.0 utf8} encoding. */
-    VRML97("wrl");
+public final class ModelFormats {
 
     private static final int SNIFF_BYTES = 512;
 
-    private final String extension;
-
-    ModelFormat(String extension) {
-        this.extension = extension;
-    }
-
-    /** The usual file extension, without the dot. */
-    public String extension() {
-        return extension;
+    private ModelFormats() {
     }
 
     /**
-     * The format a file name's extension announces, if any. Compressed variants ({@code .wrz},
+     * The format a file name's extension announces, if any: {@code .gltf}, {@code .glb},
+     * {@code .x3d}, {@code .wrl} or {@code .vrml}. Compressed variants ({@code .wrz},
      * {@code .x3dz}) are not accepted.
      */
     public static Optional<ModelFormat> fromFileName(String fileName) {
@@ -42,13 +29,13 @@ public enum ModelFormat {
         if (dot < 0) {
             return Optional.empty();
         }
-        String ext = name.substring(dot + 1);
-        for (ModelFormat format : values()) {
-            if (format.extension.equals(ext)) {
-                return Optional.of(format);
-            }
-        }
-        return ext.equals("vrml") ? Optional.of(VRML97) : Optional.empty();
+        return switch (name.substring(dot + 1)) {
+            case "gltf" -> Optional.of(ModelFormat.GLTF);
+            case "glb" -> Optional.of(ModelFormat.GLB);
+            case "x3d" -> Optional.of(ModelFormat.X3D);
+            case "wrl", "vrml" -> Optional.of(ModelFormat.VRML97);
+            default -> Optional.empty();
+        };
     }
 
     /**
@@ -59,7 +46,7 @@ public enum ModelFormat {
     public static Optional<ModelFormat> detect(byte[] bytes) {
         if (bytes.length >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T'
                 && bytes[3] == 'F') {
-            return Optional.of(GLB);
+            return Optional.of(ModelFormat.GLB);
         }
         String head = new String(bytes, 0, Math.min(bytes.length, SNIFF_BYTES),
                 StandardCharsets.UTF_8);
@@ -67,14 +54,14 @@ public enum ModelFormat {
             head = head.substring(1);
         }
         if (head.startsWith("#VRML V2.0")) {
-            return Optional.of(VRML97);
+            return Optional.of(ModelFormat.VRML97);
         }
         String trimmed = head.stripLeading();
         if (trimmed.startsWith("<") && (trimmed.contains("<X3D") || trimmed.contains("X3D "))) {
-            return Optional.of(X3D);
+            return Optional.of(ModelFormat.X3D);
         }
         if (trimmed.startsWith("{") && trimmed.contains("\"asset\"")) {
-            return Optional.of(GLTF);
+            return Optional.of(ModelFormat.GLTF);
         }
         return Optional.empty();
     }
