@@ -22,7 +22,7 @@ import io.orchard.viewer.scene.Meshes;
 import io.orchard.viewer.scene.Palette;
 import io.orchard.viewer.world.AgentView;
 import io.orchard.viewer.world.LogLine;
-import io.orchard.viewer.world.Move;
+import io.orchard.viewer.world.Motion;
 import io.orchard.viewer.world.RunningAnimation;
 import io.orchard.viewer.world.WorldMirror;
 import java.util.ArrayList;
@@ -162,11 +162,11 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
             model.update(animation.startTime());
             drive(agent, "animation " + animation.name(), () -> model.startAnimation(animation.name(), animation.loop()));
         }
-        Move move = agent.move();
+        Motion motion = agent.motion();
         Vec3 at = agent.positionAt(clock.now());
         drive(agent, "move", () -> {
-            if (move != null) {
-                model.moveTo(vector(move.from()), vector(move.to()), move.startTime(), move.duration());
+            if (motion != null) {
+                model.moveTo(vector(motion.from()), vector(motion.to()), motion.startTime(), motion.duration());
             } else {
                 model.moveTo(vector(at), vector(at), model.time(), 0);
             }
@@ -191,9 +191,9 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     }
 
     @Override
-    public void agentMoved(AgentView agent, Move move) {
+    public void agentMoved(AgentView agent, Motion motion) {
         withModel(agent, model -> drive(agent, "move",
-                () -> model.moveTo(vector(move.from()), vector(move.to()), move.startTime(), move.duration())));
+                () -> model.moveTo(vector(motion.from()), vector(motion.to()), motion.startTime(), motion.duration())));
     }
 
     @Override

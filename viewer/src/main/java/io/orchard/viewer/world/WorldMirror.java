@@ -62,7 +62,7 @@ public final class WorldMirror {
         default void agentRemoved(AgentView agent) {}
 
         /** An agent started a walk. */
-        default void agentMoved(AgentView agent, Move move) {}
+        default void agentMoved(AgentView agent, Motion motion) {}
 
         /** An agent turned. */
         default void agentRotated(AgentView agent, Rotation rotation, double time) {}
@@ -124,9 +124,9 @@ public final class WorldMirror {
             addAgent(added);
         } else if (message instanceof AgentMovedMessage moved) {
             withAgent(moved.agent(), agent -> {
-                Move move = new Move(moved.from(), moved.to(), moved.startTime(), moved.duration());
-                agent.moved(move);
-                listeners.forEach(l -> l.agentMoved(agent, move));
+                Motion motion = new Motion(moved.from(), moved.to(), moved.startTime(), moved.duration());
+                agent.moved(motion);
+                listeners.forEach(l -> l.agentMoved(agent, motion));
             });
         } else if (message instanceof AgentRotatedMessage rotated) {
             withAgent(rotated.agent(), agent -> {

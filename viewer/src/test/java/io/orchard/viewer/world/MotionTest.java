@@ -4,13 +4,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import io.orchard.protocol.value.Vec3;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.junit.jupiter.api.Test;
 
-class MoveTest {
+class MotionTest {
 
-    private final Move move = new Move(new Vec3(0, 0, 0), new Vec3(8, 0, -4), 10, 2);
+    private final Motion move = new Motion(new Vec3(0, 0, 0), new Vec3(8, 0, -4), 10, 2);
 
     @ParameterizedTest(name = "at {0} s the walk is {1} done")
     @CsvSource({"9, 0", "10, 0", "10.5, 0.25", "11, 0.5", "12, 1", "30, 1"})
@@ -26,14 +26,14 @@ class MoveTest {
 
     @Test
     void aWalkOfNoDurationJumpsAtItsStart() {
-        Move jump = new Move(new Vec3(0, 0, 0), new Vec3(1, 0, 1), 5, 0);
+        Motion jump = new Motion(new Vec3(0, 0, 0), new Vec3(1, 0, 1), 5, 0);
         assertThat(jump.at(4.99)).isEqualTo(new Vec3(0, 0, 0));
         assertThat(jump.at(5)).isEqualTo(new Vec3(1, 0, 1));
     }
 
     @Test
     void badDurationsAreRefusedWithTheValue() {
-        assertThatThrownBy(() -> new Move(new Vec3(0, 0, 0), new Vec3(1, 0, 1), 0, -1))
+        assertThatThrownBy(() -> new Motion(new Vec3(0, 0, 0), new Vec3(1, 0, 1), 0, -1))
                 .hasMessageContaining("duration must be zero or more seconds, was -1.0");
     }
 }

@@ -13,9 +13,9 @@ import java.util.Objects;
  * @param startTime simulated time at the start, in seconds
  * @param duration  simulated seconds the walk takes, zero or more
  */
-public record Move(Vec3 from, Vec3 to, double startTime, double duration) {
+public record Motion(Vec3 from, Vec3 to, double startTime, double duration) {
 
-    public Move {
+    public Motion {
         Objects.requireNonNull(from, "from");
         Objects.requireNonNull(to, "to");
         if (!Double.isFinite(startTime)) {

@@ -18,12 +18,12 @@ import io.orchard.protocol.value.RiverShape;
 import io.orchard.protocol.value.Sight;
 import io.orchard.protocol.value.Vec3;
 import java.util.List;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.junit.jupiter.api.Test;
 
 /** What an agent standing at the origin, facing north (-z), perceives, by the protocol's rules. */
-class PerceptionTest {
+class ViewConeTest {
 
     /** A castle 10 wide, 10 to 20 units east of the origin. */
     static final List<Point2> CASTLE = List.of(new Point2(10, -5), new Point2(20, -5), new Point2(20, 5),
@@ -46,14 +46,14 @@ class PerceptionTest {
             "20, -20, 360, true"    // past the castle's corner
     })
     void seesByRangeFieldAndCastle(double x, double z, double field, boolean seen) {
-        assertThat(Perception.sees(CASTLE, new Vec3(0, 0, 0), 0, sight(30, field), x, z)).isEqualTo(seen);
+        assertThat(ViewCone.sees(CASTLE, new Vec3(0, 0, 0), 0, sight(30, field), x, z)).isEqualTo(seen);
     }
 
     @Test
     void aTurnedAgentLooksWhereItsHeadingPoints() {
         double west = Math.PI / 2;
-        assertThat(Perception.sees(CASTLE, new Vec3(0, 0, 0), west, sight(30, 60), -10, 0)).isTrue();
-        assertThat(Perception.sees(CASTLE, new Vec3(0, 0, 0), west, sight(30, 60), 0, -10)).isFalse();
+        assertThat(ViewCone.sees(CASTLE, new Vec3(0, 0, 0), west, sight(30, 60), -10, 0)).isTrue();
+        assertThat(ViewCone.sees(CASTLE, new Vec3(0, 0, 0), west, sight(30, 60), 0, -10)).isFalse();
     }
 
     @Test
@@ -72,7 +72,7 @@ class PerceptionTest {
         mirror.apply(new AgentAddedMessage(0, new AgentState("Bunny", body, new Vec3(-3, 0, -3), 0, null, List.of(),
                 List.of())));
 
-        Sighting seen = Perception.of(mirror, mirror.agent("Guppy").orElseThrow(), 0);
+        Sighting seen = ViewCone.of(mirror, mirror.agent("Guppy").orElseThrow(), 0);
 
         assertThat(seen.objects()).extracting(Obstacle::id).containsExactly("T1");
         assertThat(seen.fruit()).extracting(FruitState::id).containsExactly("F1");

@@ -10,13 +10,13 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Works out what an agent perceives, by the protocol's rules (its section 3.4): a thing is seen
- * when the ground distance between centres is at most the sight's range, the thing lies within
+ * What an agent perceives, by the protocol's rules (its section 3.4): what lies in its view cone.
+ * A thing is seen when the ground distance between centres is at most the sight's range, it lies within
  * half the field of view either side of the heading, and the line of sight does not cross the
  * castle. The server's own perception also rounds its numbers; the viewer needs no numbers, only
  * which things are seen, so the two agree but for things exactly on an edge of the cone.
  */
-public final class Perception {
+public final class ViewCone {
 
     private final List<Point2> castle;
     private final Vec3 eye;
@@ -26,7 +26,7 @@ public final class Perception {
     private final double cosHalfField;
     private final boolean allAround;
 
-    private Perception(List<Point2> castle, Vec3 eye, double heading, Sight sight) {
+    private ViewCone(List<Point2> castle, Vec3 eye, double heading, Sight sight) {
         this.castle = castle;
         this.eye = eye;
         this.sight = sight;
@@ -42,7 +42,7 @@ public final class Perception {
         if (snapshot == null) {
             return Sighting.NOTHING;
         }
-        Perception view = new Perception(snapshot.castle().footprint(), agent.positionAt(time), agent.heading(),
+        ViewCone view = new ViewCone(snapshot.castle().footprint(), agent.positionAt(time), agent.heading(),
                 agent.body().sight());
         List<Obstacle> objects = new ArrayList<>();
         for (Obstacle obstacle : snapshot.obstacles()) {
@@ -68,7 +68,7 @@ public final class Perception {
 
     /** Whether an agent at {@code eye} with this heading and sight sees the point (x, z) past {@code castle}. */
     public static boolean sees(List<Point2> castle, Vec3 eye, double heading, Sight sight, double x, double z) {
-        return new Perception(castle, eye, heading, sight).sees(x, z);
+        return new ViewCone(castle, eye, heading, sight).sees(x, z);
     }
 
     private boolean sees(double x, double z) {
