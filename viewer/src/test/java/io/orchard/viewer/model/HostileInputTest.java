@@ -210,7 +210,7 @@ class HostileInputTest {
                 refused("glTF 100,000-deep JSON", ModelFormat.GLTF,
                         ("{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + "[".repeat(DEEP)
                                 + "]".repeat(DEEP) + "}").getBytes(StandardCharsets.UTF_8),
-                        Kind.TOO_LARGE, "nesting deeper than 64"),
+                        Kind.TOO_LARGE, "nesting depth (65) exceeds the maximum allowed (64)"),
                 refused("glTF node that is its own grandchild", ModelFormat.GLTF,
                         ("{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"children\": [1]},"
                                 + " {\"children\": [0]}]}").getBytes(StandardCharsets.UTF_8),

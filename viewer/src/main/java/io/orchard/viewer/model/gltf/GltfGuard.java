@@ -13,16 +13,17 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.Deque;
-import java.util.List;
 import java.util.Map;
+import tools.jackson.databind.JsonNode;
+import tools.jackson.databind.node.JsonNodeFactory;
 
 /**
  * Inspects a glTF or GLB document before jME's loader reads it, and refuses what that loader
  * would handle dangerously: buffer or image URIs other than embedded {@code data:} URIs (the
- * loader would resolve them through the asset manager, reading files), JSON nested deeper than
- * the limit, accessors that would allocate more values than the limit, node hierarchies with
- * cycles or shared children (the loader would recurse forever), more nodes than the limit, and
- * embedded images larger than the texture limit.
+ * loader would resolve them through the asset manager, reading files), JSON nested deeper or
+ * longer than the limits ({@link GltfJson}), accessors that would allocate more values than the
+ * limit, node hierarchies with cycles or shared children (the loader would recurse forever), more
+ * nodes than the limit, and embedded images larger than the texture limit.
  */
 final class GltfGuard {
 
@@ -31,11 +32,11 @@ final class GltfGuard {
     private static final Map<String, Integer> COMPONENTS = Map.of("SCALAR", 1, "VEC2", 2,
             "VEC3", 3, "VEC4", 4, "MAT2", 4, "MAT3", 9, "MAT4", 16);
 
-    private final Map<String, Object> root;
+    private final JsonNode root;
     private final ByteBuffer binChunk;
     private final ModelLimits limits;
 
-    private GltfGuard(Map<String, Object> root, ByteBuffer binChunk, ModelLimits limits) {
+    private GltfGuard(JsonNode root, ByteBuffer binChunk, ModelLimits limits) {
         this.root = root;
         this.binChunk = binChunk;
         this.limits = limits;
@@ -98,26 +99,24 @@ final class GltfGuard {
         } else {
             json = utf8(bytes, 0, bytes.length);
         }
-        Object document = JsonTree.parse(json, limits.maxDepth());
-        if (!(document instanceof Map<?, ?>)) {
+        JsonNode root = GltfJson.read(json, limits);
+        if (!root.isObject()) {
             throw new ModelException(Kind.MALFORMED, "glTF JSON is not an object");
         }
-        @SuppressWarnings("unchecked")
-        Map<String, Object> root = (Map<String, Object>) document;
         new GltfGuard(root, bin, limits).run(format);
     }
 
     private void run(ModelFormat format) throws ModelException {
-        Map<String, Object> asset = object(root.get("asset"), "asset");
-        Object version = asset.get("version");
-        if (!(version instanceof String v) || !v.startsWith("2.")) {
-            throw new ModelException(Kind.UNSUPPORTED, "glTF asset.version " + version
+        JsonNode asset = object(member(root, "asset"), "asset");
+        JsonNode version = member(asset, "version");
+        if (version == null || !version.isString() || !version.stringValue().startsWith("2.")) {
+            throw new ModelException(Kind.UNSUPPORTED, "glTF asset.version " + show(version)
                     + " is not supported; only 2.x");
         }
-        List<Object> buffers = array("buffers");
+        JsonNode buffers = array("buffers");
         for (int i = 0; i < buffers.size(); i++) {
-            Map<String, Object> buffer = object(buffers.get(i), "buffers[" + i + "]");
-            Object uri = buffer.get("uri");
+            JsonNode buffer = object(buffers.get(i), "buffers[" + i + "]");
+            JsonNode uri = member(buffer, "uri");
             if (uri == null && !(format == ModelFormat.GLB && i == 0)) {
                 throw new ModelException(Kind.MALFORMED, "glTF buffers[" + i + "] has no uri");
             }
@@ -132,19 +131,22 @@ final class GltfGuard {
 
     private void checkAccessors() throws ModelException {
         long values = 0;
-        List<Object> accessors = array("accessors");
+        JsonNode accessors = array("accessors");
         for (int i = 0; i < accessors.size(); i++) {
             String where = "accessors[" + i + "]";
-            Map<String, Object> accessor = object(accessors.get(i), where);
-            Integer components = COMPONENTS.get(String.valueOf(accessor.get("type")));
+            JsonNode accessor = object(accessors.get(i), where);
+            JsonNode type = member(accessor, "type");
+            Integer components = type != null && type.isString()
+                    ? COMPONENTS.get(type.stringValue()) : null;
             if (components == null) {
                 throw new ModelException(Kind.BAD_VALUE, "glTF " + where + ".type: expected"
-                        + " SCALAR, VEC2..4 or MAT2..4 but found " + accessor.get("type"));
+                        + " SCALAR, VEC2..4 or MAT2..4 but found " + show(type));
             }
-            values += count(accessor.get("count"), where + ".count") * components;
-            Object sparse = accessor.get("sparse");
-            if (sparse instanceof Map<?, ?> s) {
-                values += count(s.get("count"), where + ".sparse.count") * (components + 1);
+            values += count(member(accessor, "count"), where + ".count") * components;
+            JsonNode sparse = member(accessor, "sparse");
+            if (sparse != null && sparse.isObject()) {
+                values += count(member(sparse, "count"), where + ".sparse.count")
+                        * (components + 1);
             }
             if (values > limits.maxArrayValues()) {
                 throw new ModelException(Kind.TOO_LARGE, "glTF " + where + ": the accessors"
@@ -155,28 +157,29 @@ final class GltfGuard {
 
     /** Nodes form a forest within the depth limit; nodes plus mesh parts within the limit. */
     private void checkNodes() throws ModelException {
-        List<Object> nodes = array("nodes");
-        List<Object> meshes = array("meshes");
+        JsonNode nodes = array("nodes");
+        JsonNode meshes = array("meshes");
         long spatials = nodes.size();
         int[] parent = new int[nodes.size()];
         Arrays.fill(parent, -1);
         for (int i = 0; i < nodes.size(); i++) {
-            Map<String, Object> node = object(nodes.get(i), "nodes[" + i + "]");
-            Object mesh = node.get("mesh");
+            JsonNode node = object(nodes.get(i), "nodes[" + i + "]");
+            JsonNode mesh = member(node, "mesh");
             if (mesh != null) {
                 int m = index(mesh, meshes.size(), "nodes[" + i + "].mesh");
-                Object primitives = object(meshes.get(m), "meshes[" + m + "]").get("primitives");
-                spatials += primitives instanceof List<?> list ? list.size() : 0;
+                JsonNode primitives = member(object(meshes.get(m), "meshes[" + m + "]"),
+                        "primitives");
+                spatials += primitives != null && primitives.isArray() ? primitives.size() : 0;
             }
-            Object children = node.get("children");
+            JsonNode children = member(node, "children");
             if (children == null) {
                 continue;
             }
-            if (!(children instanceof List<?> list)) {
+            if (!children.isArray()) {
                 throw new ModelException(Kind.MALFORMED, "glTF nodes[" + i + "].children is not"
                         + " an array");
             }
-            for (Object child : list) {
+            for (JsonNode child : children.values()) {
                 int c = index(child, nodes.size(), "nodes[" + i + "].children");
                 if (parent[c] >= 0 || c == i) {
                     throw new ModelException(Kind.MALFORMED, "glTF nodes[" + c + "] is a child of"
@@ -203,40 +206,41 @@ final class GltfGuard {
                 throw new ModelException(Kind.TOO_LARGE, "glTF nodes[" + entry[0] + "] is nested"
                         + " deeper than " + limits.maxDepth() + " levels");
             }
-            Object children = ((Map<?, ?>) nodes.get(entry[0])).get("children");
-            if (children instanceof List<?> list) {
-                for (Object child : list) {
-                    pending.push(new int[] {((Double) child).intValue(), entry[1] + 1});
+            JsonNode children = member(nodes.get(entry[0]), "children");
+            if (children != null) {
+                for (JsonNode child : children.values()) {
+                    pending.push(new int[] {child.intValue(), entry[1] + 1});
                 }
             }
         }
         if (reached != nodes.size()) {
             throw new ModelException(Kind.MALFORMED, "glTF node hierarchy has a cycle");
         }
-        List<Object> scenes = array("scenes");
+        JsonNode scenes = array("scenes");
         for (int i = 0; i < scenes.size(); i++) {
-            Object sceneNodes = object(scenes.get(i), "scenes[" + i + "]").get("nodes");
-            if (sceneNodes instanceof List<?> list) {
-                for (Object n : list) {
+            JsonNode sceneNodes = member(object(scenes.get(i), "scenes[" + i + "]"), "nodes");
+            if (sceneNodes != null && sceneNodes.isArray()) {
+                for (JsonNode n : sceneNodes.values()) {
                     index(n, nodes.size(), "scenes[" + i + "].nodes");
                 }
             }
         }
     }
 
-    private void checkImages(List<Object> buffers) throws ModelException {
-        List<Object> images = array("images");
-        List<Object> views = array("bufferViews");
+    private void checkImages(JsonNode buffers) throws ModelException {
+        JsonNode images = array("images");
+        JsonNode views = array("bufferViews");
         for (int i = 0; i < images.size(); i++) {
             String where = "glTF images[" + i + "]";
-            Map<String, Object> image = object(images.get(i), "images[" + i + "]");
+            JsonNode image = object(images.get(i), "images[" + i + "]");
             byte[] data = null;
-            Object uri = image.get("uri");
+            JsonNode uri = member(image, "uri");
+            JsonNode view = member(image, "bufferView");
             if (uri != null) {
                 requireEmbedded(uri, "images[" + i + "].uri");
-                data = DataUriImages.bytes((String) uri, where);
-            } else if (image.get("bufferView") != null) {
-                data = bufferView(views, buffers, index(image.get("bufferView"), views.size(),
+                data = DataUriImages.bytes(uri.stringValue(), where);
+            } else if (view != null) {
+                data = bufferView(views, buffers, index(view, views.size(),
                         "images[" + i + "].bufferView"));
             }
             if (data != null && data.length >= 8) {
@@ -259,14 +263,14 @@ final class GltfGuard {
         }
     }
 
-    private byte[] bufferView(List<Object> views, List<Object> buffers, int v)
-            throws ModelException {
-        Map<String, Object> view = object(views.get(v), "bufferViews[" + v + "]");
-        int b = index(view.get("buffer"), buffers.size(), "bufferViews[" + v + "].buffer");
-        long offset = view.get("byteOffset") == null ? 0
-                : count(view.get("byteOffset"), "bufferViews[" + v + "].byteOffset");
-        long length = count(view.get("byteLength"), "bufferViews[" + v + "].byteLength");
-        Object uri = object(buffers.get(b), "buffers[" + b + "]").get("uri");
+    private byte[] bufferView(JsonNode views, JsonNode buffers, int v) throws ModelException {
+        JsonNode view = object(views.get(v), "bufferViews[" + v + "]");
+        int b = index(member(view, "buffer"), buffers.size(), "bufferViews[" + v + "].buffer");
+        JsonNode byteOffset = member(view, "byteOffset");
+        long offset = byteOffset == null ? 0
+                : count(byteOffset, "bufferViews[" + v + "].byteOffset");
+        long length = count(member(view, "byteLength"), "bufferViews[" + v + "].byteLength");
+        JsonNode uri = member(object(buffers.get(b), "buffers[" + b + "]"), "uri");
         byte[] buffer;
         if (uri == null) {
             if (binChunk == null) {
@@ -276,7 +280,7 @@ final class GltfGuard {
             buffer = new byte[binChunk.remaining()];
             binChunk.duplicate().get(buffer);
         } else {
-            buffer = DataUriImages.bytes((String) uri, "glTF buffers[" + b + "].uri");
+            buffer = DataUriImages.bytes(uri.stringValue(), "glTF buffers[" + b + "].uri");
         }
         if (offset + length > buffer.length) {
             throw new ModelException(Kind.MALFORMED, "glTF bufferViews[" + v + "] reaches byte "
@@ -287,10 +291,11 @@ final class GltfGuard {
         return slice;
     }
 
-    private static void requireEmbedded(Object uri, String where) throws ModelException {
-        if (!(uri instanceof String text)) {
+    private static void requireEmbedded(JsonNode uri, String where) throws ModelException {
+        if (!uri.isString()) {
             throw new ModelException(Kind.MALFORMED, "glTF " + where + " is not a string");
         }
+        String text = uri.stringValue();
         if (!DataUriImages.isDataUri(text)) {
             throw new ModelException(Kind.UNSAFE, "glTF " + where + " '" + abbreviate(text)
                     + "' refers to an external resource; only embedded data: URIs are accepted"
@@ -298,42 +303,57 @@ final class GltfGuard {
         }
     }
 
-    private List<Object> array(String name) throws ModelException {
-        Object value = root.get(name);
+    /** A top-level array, empty when absent or null. */
+    private JsonNode array(String name) throws ModelException {
+        JsonNode value = member(root, name);
         if (value == null) {
-            return List.of();
+            return JsonNodeFactory.instance.arrayNode();
         }
-        if (!(value instanceof List<?>)) {
+        if (!value.isArray()) {
             throw new ModelException(Kind.MALFORMED, "glTF " + name + " is not an array");
         }
-        @SuppressWarnings("unchecked")
-        List<Object> list = (List<Object>) value;
-        return list;
+        return value;
     }
 
-    @SuppressWarnings("unchecked")
-    private static Map<String, Object> object(Object value, String where) throws ModelException {
-        if (!(value instanceof Map<?, ?>)) {
+    /** A member's value; null when it is absent or JSON null, as glTF means the same by both. */
+    private static JsonNode member(JsonNode object, String name) {
+        JsonNode value = object.get(name);
+        return value == null || value.isNull() ? null : value;
+    }
+
+    private static JsonNode object(JsonNode value, String where) throws ModelException {
+        if (value == null || !value.isObject()) {
             throw new ModelException(Kind.MALFORMED, "glTF " + where + " is missing or not an"
                     + " object");
         }
-        return (Map<String, Object>) value;
+        return value;
     }
 
-    private static long count(Object value, String where) throws ModelException {
-        if (!(value instanceof Double d) || d < 0 || d != Math.floor(d) || d > Integer.MAX_VALUE) {
+    private static long count(JsonNode value, String where) throws ModelException {
+        double d = value != null && value.isNumber() ? value.doubleValue() : -1;
+        if (d < 0 || d != Math.floor(d) || d > Integer.MAX_VALUE) {
             throw new ModelException(Kind.BAD_VALUE, "glTF " + where + ": expected a count but"
-                    + " found " + value);
+                    + " found " + show(value));
         }
-        return d.longValue();
+        return (long) d;
     }
 
-    private static int index(Object value, int size, String where) throws ModelException {
-        if (!(value instanceof Double d) || d != Math.floor(d) || d < 0 || d >= size) {
-            throw new ModelException(Kind.BAD_VALUE, "glTF " + where + ": index " + value
+    private static int index(JsonNode value, int size, String where) throws ModelException {
+        double d = value != null && value.isNumber() ? value.doubleValue() : -1;
+        if (d != Math.floor(d) || d < 0 || d >= size) {
+            throw new ModelException(Kind.BAD_VALUE, "glTF " + where + ": index " + show(value)
                     + " is not one of the " + size + " entries");
         }
-        return d.intValue();
+        return (int) d;
+    }
+
+    /** A value as a message shows it: text without quotes, anything else as JSON. */
+    private static String show(JsonNode value) {
+        if (value == null) {
+            return "null";
+        }
+        String text = value.isString() ? value.stringValue() : value.toString();
+        return abbreviate(text);
     }
 
     private static String utf8(byte[] bytes, int offset, int length) throws ModelException {
