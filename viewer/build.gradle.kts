@@ -17,6 +17,8 @@ dependencies {
     implementation(libs.jme3.lwjgl3)
     implementation(libs.jme3.plugins)
     implementation(libs.slf4j.api)
+    // jME logs to java.util.logging; the viewer sends it into SLF4J, so there is one log.
+    implementation(libs.jul.to.slf4j)
 
     // The viewer is tested against a real server, which it never depends on otherwise.
     testImplementation(project(":server"))

@@ -76,6 +76,7 @@ public final class ViewerMain {
             err.println("orchard viewer: " + display);
             return 1;
         }
+        JulToSlf4j.install();
         JME_LOG.setLevel(Level.WARNING);
         ViewerApp app = new ViewerApp(options, recording, out, err);
         app.setSettings(settings(options));

@@ -4,14 +4,14 @@ package io.orchard.viewer.model;
  * One field of a node type: its name, type, who may read or write it, its default value, and for
  * node-valued fields the kind of node it accepts.
  */
-record FieldDef(String name, FieldType type, Access access, Object defaultValue,
-                NodeKind accepts) {
+public record FieldDef(String name, FieldType type, Access access, Object defaultValue,
+                       NodeKind accepts) {
 
     /** VRML97's four field categories (X3D's initializeOnly/inputOnly/outputOnly/inputOutput). */
-    enum Access {
+    public enum Access {
         FIELD, EXPOSED, EVENT_IN, EVENT_OUT;
 
-        boolean canInitialize() {
+        public boolean canInitialize() {
             return this == FIELD || this == EXPOSED;
         }
 

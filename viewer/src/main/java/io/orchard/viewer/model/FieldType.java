@@ -7,7 +7,7 @@ package io.orchard.viewer.model;
  * {@code int[]} for MFInt32; {@code String}; {@code List<String>}; {@link SceneNode} (null for
  * NULL); {@code List<SceneNode>}.
  */
-enum FieldType {
+public enum FieldType {
     SFBOOL("SFBool", 0, false),
     SFINT32("SFInt32", 1, false),
     SFFLOAT("SFFloat", 1, false),
@@ -38,24 +38,24 @@ enum FieldType {
     }
 
     /** Numbers per value: 3 for SFVec3f and MFVec3f, 0 for non-numeric types. */
-    int components() {
+    public int components() {
         return components;
     }
 
-    boolean isMultiple() {
+    public boolean isMultiple() {
         return multiple;
     }
 
-    boolean isNode() {
+    public boolean isNode() {
         return this == SFNODE || this == MFNODE;
     }
 
-    boolean isInteger() {
+    public boolean isInteger() {
         return this == SFINT32 || this == MFINT32;
     }
 
     /** Whether an SF value is stored as a {@code Double} rather than a {@code float[]}. */
-    boolean isScalar() {
+    public boolean isScalar() {
         return this == SFFLOAT || this == SFTIME;
     }
 

@@ -1,7 +1,7 @@
 package io.orchard.viewer.model;
 
 /** Where a node may appear: the roles of the VRML97 node type hierarchy that this loader uses. */
-enum NodeKind {
+public enum NodeKind {
     /** Anything allowed in a grouping node's children: groups, shapes, sensors, interpolators. */
     CHILD("a child node"),
     GEOMETRY("a geometry node"),
@@ -21,7 +21,7 @@ enum NodeKind {
         this.description = description;
     }
 
-    String description() {
+    public String description() {
         return description;
     }
 }

@@ -5,11 +5,13 @@ import com.jme3.math.Vector3f;
 import java.util.Set;
 
 /**
- * How an {@link AgentModel} moves, poses and animates its spatials: through the event graph of
- * a VRML97 or X3D model, or directly on the spatials of a glTF model or a placeholder. Arguments
- * arrive checked.
+ * How a {@link BodyModel} moves, poses and animates its spatials: through the event graph of
+ * a VRML97 or X3D model, or directly on the spatials of a glTF model or a placeholder. The rigs
+ * are in {@code io.orchard.viewer.model.build}; the rest of the viewer goes through
+ * {@link BodyModel}, which checks the arguments (and documents each operation) before they
+ * arrive here.
  */
-interface Rig {
+public interface Rig {
 
     void moveTo(Vector3f from, Vector3f to, double startTime, double duration);
 
@@ -31,11 +33,4 @@ interface Rig {
 
     /** Advances to simulated time {@code time}, {@code elapsed} seconds after the last call. */
     void update(double time, double elapsed);
-
-    static ModelException unknown(String what, String name, Set<String> known) {
-        String list = known.stream().sorted().limit(20).toList()
-                + (known.size() > 20 ? " and " + (known.size() - 20) + " more" : "");
-        return new ModelException(ModelException.Kind.UNKNOWN_NAME, "the model has no " + what
-                + " named '" + name + "'; it has " + (known.isEmpty() ? "none" : list));
-    }
 }

@@ -13,7 +13,7 @@ import java.util.Optional;
  *
  * <p>Arrays returned by the getters are shared with the description and must not be modified.
  */
-final class SceneNode {
+public final class SceneNode {
 
     private final String typeName;
     private final NodeType type;
@@ -23,39 +23,39 @@ final class SceneNode {
     private int weight = 1;
     private int height = 1;
 
-    SceneNode(String typeName, String location) {
+    public SceneNode(String typeName, String location) {
         this.typeName = typeName;
         this.type = NodeSchema.find(typeName).orElse(null);
         this.location = location;
     }
 
-    String typeName() {
+    public String typeName() {
         return typeName;
     }
 
     /** The schema type, or empty for a node type this loader parses but does not build. */
-    Optional<NodeType> type() {
+    public Optional<NodeType> type() {
         return Optional.ofNullable(type);
     }
 
-    boolean isKnown() {
+    public boolean isKnown() {
         return type != null;
     }
 
-    boolean is(String name) {
+    public boolean is(String name) {
         return typeName.equals(name);
     }
 
-    Optional<String> defName() {
+    public Optional<String> defName() {
         return Optional.ofNullable(defName);
     }
 
-    void setDefName(String name) {
+    public void setDefName(String name) {
         this.defName = name;
     }
 
     /** Where the node starts in its file, such as {@code "line 4:3"}. */
-    String location() {
+    public String location() {
         return location;
     }
 
@@ -76,7 +76,7 @@ final class SceneNode {
      * Computes {@link #weight()} and {@link #height()} from the node's children, counting every
      * {@code USE} in full; called once, when the node's last child has been read.
      */
-    void complete() {
+    public void complete() {
         int totalWeight = 1;
         int maxHeight = 0;
         for (SceneNode child : childNodes()) {
@@ -87,16 +87,16 @@ final class SceneNode {
         this.height = maxHeight + 1;
     }
 
-    void set(String field, Object value) {
+    public void set(String field, Object value) {
         fields.put(field, value);
     }
 
-    boolean has(String field) {
+    public boolean has(String field) {
         return fields.containsKey(field);
     }
 
     /** The nodes held in node-valued fields, in file order (unknown types' fields included). */
-    List<SceneNode> childNodes() {
+    public List<SceneNode> childNodes() {
         List<SceneNode> result = new ArrayList<>();
         for (Object value : fields.values()) {
             if (value instanceof SceneNode node) {
@@ -112,7 +112,7 @@ final class SceneNode {
         return result;
     }
 
-    Object get(String field) {
+    public Object get(String field) {
         Object value = fields.get(field);
         if (value != null || fields.containsKey(field)) {
             return value;
@@ -127,32 +127,32 @@ final class SceneNode {
         return def.defaultValue();
     }
 
-    boolean bool(String field) {
+    public boolean bool(String field) {
         return (Boolean) get(field);
     }
 
-    int integer(String field) {
+    public int integer(String field) {
         return (Integer) get(field);
     }
 
-    double number(String field) {
+    public double number(String field) {
         return (Double) get(field);
     }
 
-    float[] floats(String field) {
+    public float[] floats(String field) {
         return (float[]) get(field);
     }
 
-    int[] ints(String field) {
+    public int[] ints(String field) {
         return (int[]) get(field);
     }
 
     @SuppressWarnings("unchecked")
-    List<String> strings(String field) {
+    public List<String> strings(String field) {
         return (List<String>) get(field);
     }
 
-    SceneNode node(String field) {
+    public SceneNode node(String field) {
         return (SceneNode) get(field);
     }
 
@@ -160,19 +160,19 @@ final class SceneNode {
      * The node in a node field if it is of type {@code typeName}, else null: a field that holds
      * a node type this loader does not build counts as empty.
      */
-    SceneNode node(String field, String typeName) {
+    public SceneNode node(String field, String typeName) {
         SceneNode node = node(field);
         return node != null && node.is(typeName) ? node : null;
     }
 
     @SuppressWarnings("unchecked")
-    List<SceneNode> nodes(String field) {
+    public List<SceneNode> nodes(String field) {
         Object value = get(field);
         return value == null ? List.of() : (List<SceneNode>) value;
     }
 
     /** How messages name this node: {@code Transform 'LeftKnee'} or {@code Shape (line 7:5)}. */
-    String label() {
+    public String label() {
         return defName != null ? typeName + " '" + defName + "'" : typeName + " (" + location + ")";
     }
 
