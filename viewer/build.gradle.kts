@@ -17,6 +17,8 @@ dependencies {
     implementation(libs.jme3.lwjgl3)
     implementation(libs.jme3.plugins)
     implementation(libs.slf4j.api)
+    // ViewerMain.command() hands its picocli CommandLine to launchers.
+    api(libs.picocli)
 
     // The viewer is tested against a real server, which it never depends on otherwise.
     testImplementation(project(":server"))
