@@ -135,7 +135,7 @@ public final class ServerMain implements Callable<Integer> {
     /** The help text of the server's command line. */
     public static String help() {
         return command(InputStream.nullInputStream(), System.out, System.err).setCommandName("orchard server")
-                .getUsageMessage();
+                .getUsageMessage(CommandLine.Help.Ansi.OFF);
     }
 
     /**
