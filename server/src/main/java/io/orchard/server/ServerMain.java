@@ -35,8 +35,9 @@ import picocli.CommandLine.Spec;
  * command line.
  */
 @Command(name = "server", abbreviateSynopsis = true, sortOptions = false,
-        description = {"Run the world server: the world, the game and the protocol on one TCP port", "",
-            "It prints the game's state every second and the ranking when the game is over."},
+        description = {"Run the world server (the world, the game, the protocol)", "",
+            "It holds the world and the game and speaks the protocol on one TCP port; it prints the game's state "
+                    + "every second and the ranking when the game is over."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
         footer = "Console commands: start, pause, continue, status, checkpoint [FILE], stop.")
 public final class ServerMain implements Callable<Integer> {

@@ -23,7 +23,7 @@ import picocli.CommandLine.Spec;
  * options and what was expected.
  */
 @Command(name = "viewer", abbreviateSynopsis = true, sortOptions = false,
-        description = {"Watch the world in 3D, live or from a recording, in a window or headless writing screenshots", "",
+        description = {"Watch the world in 3D, live or from a recording", "",
             "It shows an Orchard world live from a server, or replayed from a recording (the server's --record), "
                     + "in a window, or headless (--headless): rendered off screen, writing screenshots at given "
                     + "simulated times or every so many seconds, or measuring the frame rate, and then exiting."},

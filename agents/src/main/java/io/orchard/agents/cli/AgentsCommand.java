@@ -21,7 +21,7 @@ import picocli.CommandLine.Option;
 
 /** {@code ./orchard agents}: all five agents of the zoo, each on its own connection. */
 @Command(name = "agents", abbreviateSynopsis = true, sortOptions = false,
-        description = {"Run all five of the paper's agents, each on its own connection", "",
+        description = {"Run the paper's five agents, each on its own connection", "",
             "A console line 'Name: instruction' instructs one of them, as in 'Dwarf: collect a banana' or "
                     + "'Guppy, stop'."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n")
