@@ -61,7 +61,7 @@ final class AgentCommand implements Callable<Integer> {
         AgentController agent = species.create(name);
         agent.addSpeechListener(text -> out.println(name + ": " + text));
         AgentMain.listen(console, agent::instruct);
-        out.printf(Locale.ROOT, "%s (%s) joins the game at %s:%d; type instructions for it here.%n", name,
+        out.printf(Locale.ROOT, "%s (%s) is connecting to %s:%d; type instructions for it here.%n", name,
                 species.name().toLowerCase(Locale.ROOT), server.host, server.port);
         try {
             GameOverMessage over = agent.run(server.host, server.port, server.token);

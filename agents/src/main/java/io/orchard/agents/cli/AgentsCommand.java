@@ -52,7 +52,7 @@ final class AgentsCommand implements Callable<Integer> {
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);
         }
         AgentMain.listen(console, line -> AgentMain.route(line, byName, out));
-        out.printf(Locale.ROOT, "%s join the game at %s:%d; instruct one with 'Name: instruction'.%n",
+        out.printf(Locale.ROOT, "%s are connecting to %s:%d; instruct one with 'Name: instruction'.%n",
                 String.join(", ", byName.values().stream().map(AgentController::name).toList()), server.host,
                 server.port);
         ExecutorService pool = Executors.newFixedThreadPool(byName.size(), runnable -> {

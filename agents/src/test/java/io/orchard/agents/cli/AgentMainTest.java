@@ -85,7 +85,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Gup (guppy) joins the game", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
+            assertThat(out()).contains("Gup (guppy) is connecting to 127.0.0.1:", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
                     "Game over (time limit reached). Ranking:", "1. Gup", "Gup: ");
         }
 
@@ -98,7 +98,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner join the game", "Dwarf: Stopping.",
+            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner are connecting to 127.0.0.1:", "Dwarf: Stopping.",
                     "Roadrunner: Carrying on by myself.", "Guppy: Turning left.", "Start the line with the agent's name",
                     "Game over", "Bunny: ");
         }

@@ -57,7 +57,7 @@ public final class FirstAgentCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        out.println(name + " joins the game at " + host + ":" + port);
+        out.println(name + " is connecting to " + host + ":" + port);
         out.flush();
         try {
             GameOverMessage over = new FirstAgent(name).run(host, port, token);
