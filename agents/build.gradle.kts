@@ -11,6 +11,8 @@ description = "AgentController, the base every Orchard agent extends, its behavi
 dependencies {
     api(project(":protocol"))
     implementation(libs.slf4j.api)
+    // AgentMain hands its picocli CommandLines to launchers.
+    api(libs.picocli)
 
     // Agents are tested against a real server, which they never depend on otherwise.
     testImplementation(project(":server"))

@@ -17,6 +17,7 @@ dependencies {
     implementation(libs.logback.classic)
     implementation(libs.jsonschema.generator)
     implementation(libs.xchart)
+    implementation(libs.picocli)
 
     testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)

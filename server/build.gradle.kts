@@ -15,6 +15,8 @@ dependencies {
     implementation(libs.netty.codec.base)
     implementation(libs.jts.core)
     implementation(libs.slf4j.api)
+    // ServerMain.command() hands its picocli CommandLine to launchers.
+    api(libs.picocli)
 
     testImplementation(libs.logback.classic)
     testImplementation(libs.jazzer.junit)

@@ -19,6 +19,8 @@ dependencies {
     implementation(libs.slf4j.api)
     // jME logs to java.util.logging; the viewer sends it into SLF4J, so there is one log.
     implementation(libs.jul.to.slf4j)
+    // ViewerMain.command() hands its picocli CommandLine to launchers.
+    api(libs.picocli)
 
     // The viewer is tested against a real server, which it never depends on otherwise.
     testImplementation(project(":server"))

@@ -34,7 +34,8 @@ final class BuildChecks {
             entry("jsonschema-generator", "jsonschema-generator.version"),
             entry("jmh", "jmh.version"),
             entry("jazzer", "jazzer.version"),
-            entry("xchart", "xchart.version"));
+            entry("xchart", "xchart.version"),
+            entry("picocli", "picocli.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

@@ -25,15 +25,16 @@ class ViewerMainTest {
     @Test
     void helpPrintsTheOptionsAndExitsZero() {
         assertThat(run("--help")).isZero();
-        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: orchard viewer [options]")
-                .contains("--headless", "--replay FILE");
+        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: orchard viewer [OPTIONS]")
+                .contains("--headless", "--replay=FILE");
     }
 
     @Test
     void aBadCommandLineExitsTwoNamingTheOption() {
         assertThat(run("--size", "huge")).isEqualTo(2);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("orchard viewer: --size must be WIDTHxHEIGHT")
-                .contains("--help");
+        assertThat(err.toString(StandardCharsets.UTF_8))
+                .contains("orchard viewer: invalid value for option '--size': 'huge' is not a size (expected WIDTHxHEIGHT")
+                .contains("./orchard viewer --help");
     }
 
     @Test
@@ -57,7 +58,7 @@ class ViewerMainTest {
 
     @Test
     void aRenderErrorEndsTheRunWithStatusOneNotZero() throws Exception {
-        ViewerOptions options = ViewerOptions.parse(List.of("--headless", "--screenshot", "x.png"));
+        ViewerOptions options = ViewerCommand.parse(List.of("--headless", "--screenshot", "x.png"));
         ViewerApp app = new ViewerApp(options, null, new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
 

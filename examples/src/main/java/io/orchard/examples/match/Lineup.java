@@ -3,7 +3,6 @@ package io.orchard.examples.match;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.zoo.Species;
 import io.orchard.examples.firstagent.FirstAgent;
-import io.orchard.protocol.cli.UsageException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashSet;
@@ -32,31 +31,27 @@ public final class Lineup {
 
     /** The paper's five agents. */
     public static Lineup zoo() {
-        List<String> names = Arrays.stream(Species.values()).map(Species::agentName).toList();
-        try {
-            return parse(String.join(",", names));
-        } catch (UsageException e) {
-            throw new IllegalStateException(e);
-        }
+        return parse(String.join(",", Arrays.stream(Species.values()).map(Species::agentName).toList()));
     }
 
     /**
      * The agents named in a comma-separated list, such as {@code Dwarf,Robot,FirstAgent} (any case).
      *
-     * @throws UsageException naming an unknown or repeated agent, or an empty list
+     * @throws IllegalArgumentException naming an unknown or repeated agent, or an empty name
      */
-    public static Lineup parse(String list) throws UsageException {
+    public static Lineup parse(String list) {
         List<String> names = new ArrayList<>();
         List<Supplier<AgentController>> makers = new ArrayList<>();
         Set<String> seen = new LinkedHashSet<>();
         for (String word : list.split(",", -1)) {
             String name = word.strip();
             if (name.isEmpty()) {
-                throw new UsageException("--agents must name agents separated by commas, such as Dwarf,Robot; was '"
-                        + list + "'");
+                throw new IllegalArgumentException("'" + list + "' has an empty name (expected agents separated by "
+                        + "commas, such as Dwarf,Robot)");
             }
             if (!seen.add(name.toLowerCase(Locale.ROOT))) {
-                throw new UsageException("--agents names " + name + " twice; each agent plays once per game");
+                throw new IllegalArgumentException("'" + list + "' names " + name
+                        + " twice (expected each agent once: an agent plays once per game)");
             }
             if (name.equalsIgnoreCase(FIRST_AGENT)) {
                 names.add(FIRST_AGENT);
@@ -80,14 +75,14 @@ public final class Lineup {
         return makers.stream().map(Supplier::get).toList();
     }
 
-    private static Species species(String name) throws UsageException {
+    private static Species species(String name) {
         for (Species species : Species.values()) {
             if (species.agentName().equalsIgnoreCase(name)) {
                 return species;
             }
         }
-        throw new UsageException("--agents: no agent '" + name + "'; expected some of "
+        throw new IllegalArgumentException("no agent '" + name + "' (expected some of "
                 + String.join(", ", Arrays.stream(Species.values()).map(Species::agentName).toList()) + ", "
-                + FIRST_AGENT);
+                + FIRST_AGENT + ")");
     }
 }

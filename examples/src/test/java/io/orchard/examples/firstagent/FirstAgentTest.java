@@ -2,6 +2,7 @@ package io.orchard.examples.firstagent;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.examples.Orchard;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
@@ -40,7 +41,7 @@ class FirstAgentTest {
         }
         ByteArrayOutputStream err = new ByteArrayOutputStream();
 
-        int status = new FirstAgentCommand().run(List.of("--port", String.valueOf(port)),
+        int status = Orchard.run(new String[] {"first-agent", "--port", String.valueOf(port)},
                 new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
 
