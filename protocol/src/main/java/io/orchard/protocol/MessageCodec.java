@@ -36,8 +36,9 @@ import tools.jackson.databind.jsontype.NamedType;
  * Decoding ignores fields it does not know (so newer peers can add fields) and refuses unknown
  * types, missing required fields, values of the wrong JSON type, fractions where integers belong,
  * duplicate keys, non-finite numbers and bytes that are not strict UTF-8 (overlong forms,
- * surrogates, code points beyond U+10FFFF: the error names the byte's offset in the line). Every refusal is a {@link ProtocolException} whose message
- * names the message type, the field and the bad value; decoding throws nothing else.
+ * surrogates, code points beyond U+10FFFF: the error names the byte's offset in the line). Every
+ * refusal is a {@link ProtocolException} whose message names the message type, the field and the
+ * bad value; decoding throws nothing else.
  *
  * <p>Instances are immutable and safe to share between threads.
  */

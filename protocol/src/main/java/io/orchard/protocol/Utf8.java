@@ -42,13 +42,15 @@ final class Utf8 {
                 return "invalid UTF-8 at byte " + i + ": " + lead(lead);
             }
             if (i + size > length) {
-                return "invalid UTF-8 at byte " + i + ": a sequence of " + size + " bytes cut short by the end of the line";
+                return "invalid UTF-8 at byte " + i + ": a sequence of " + size
+                        + " bytes cut short by the end of the line";
             }
             int second = bytes[i + 1] & 0xff;
             if (second < min || second > max) {
                 if (second >= 0x80 && second <= 0xbf) {
-                    return "invalid UTF-8 at byte " + i + ": " + hex(bytes, i, size) + " is "
-                            + (lead == 0xed ? "a surrogate" : lead == 0xf4 ? "beyond U+10FFFF" : "an overlong encoding");
+                    String what = lead == 0xed ? "a surrogate"
+                            : lead == 0xf4 ? "beyond U+10FFFF" : "an overlong encoding";
+                    return "invalid UTF-8 at byte " + i + ": " + hex(bytes, i, size) + " is " + what;
                 }
                 return "invalid UTF-8 at byte " + (i + 1) + ": " + hex(bytes, i + 1, 1)
                         + " does not continue the sequence begun by " + hex(bytes, i, 1);

@@ -17,7 +17,6 @@ import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.Inbox;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 
@@ -54,7 +53,7 @@ class SessionHandlerTest {
     private final ListeningInbox inbox = new ListeningInbox();
 
     private EmbeddedChannel channel(String token) {
-        return new EmbeddedChannel(new SessionHandler(inbox, new AtomicLong(), token, NetLimits.DEFAULT, new TickWrites()));
+        return new EmbeddedChannel(new SessionHandler(SessionContext.of(inbox, token, NetLimits.DEFAULT)));
     }
 
     private static HelloMessage hello(int version, String token) {
