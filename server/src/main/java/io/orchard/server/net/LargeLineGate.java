@@ -2,17 +2,18 @@ package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
 import io.netty.channel.ChannelHandlerContext;
-import io.netty.channel.ChannelInboundHandlerAdapter;
+import io.netty.channel.ChannelDuplexHandler;
 import io.orchard.protocol.MessageCodec;
 
 /**
  * Makes a line that grows past an ordinary message's length take one of the server's few places for
  * large lines ({@link LineSlots}) before more of it is read: without a place the connection stops
- * reading until one frees. It watches the raw bytes before framing, so what a connection buffers
- * without a place is an ordinary line and what one read brings. One per channel (it holds the
- * length of the line in progress and whether it has a place).
+ * reading until one frees: it turns reading off and holds back the reads later stages ask for (the
+ * framer asks for one whenever a read brought no whole line). It watches the raw bytes before
+ * framing, so what a connection buffers without a place is an ordinary line and what one read
+ * brings. One per channel (it holds the length of the line in progress and whether it has a place).
  */
-final class LargeLineGate extends ChannelInboundHandlerAdapter implements LineSlots.Waiter {
+final class LargeLineGate extends ChannelDuplexHandler implements LineSlots.Waiter {
 
     private final LineSlots slots;
     private ChannelHandlerContext ctx;
@@ -50,6 +51,13 @@ final class LargeLineGate extends ChannelInboundHandlerAdapter implements LineSl
             }
         }
         ctx.fireChannelRead(message);
+    }
+
+    @Override
+    public void read(ChannelHandlerContext ctx) {
+        if (!waiting) {
+            ctx.read();
+        }
     }
 
     @Override

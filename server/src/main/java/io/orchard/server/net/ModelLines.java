@@ -29,7 +29,7 @@ final class ModelLines {
         return model != null && model.data() != null && !model.data().isEmpty();
     }
 
-    /** The line of {@code message} cut where its model's data goes; the message must {@linkplain #carriesData carry data}. */
+    /** The line of {@code message} cut where its model's data goes; it must {@linkplain #carriesData carry data}. */
     static Cut cut(MessageCodec codec, AgentAddedMessage message) {
         AgentState agent = message.agent();
         AgentState empty = new AgentState(agent.name(), agent.body(), agent.position(), agent.heading(),

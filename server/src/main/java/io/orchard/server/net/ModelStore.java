@@ -73,8 +73,10 @@ final class ModelStore {
     /** Decoded bytes of the Base64 text, counted from its length and padding. */
     static int decodedSize(String data) {
         int length = data.length();
-        int padding = length > 0 && data.charAt(length - 1) == '=' ? (length > 1 && data.charAt(length - 2) == '=' ? 2 : 1)
-                : 0;
+        int padding = 0;
+        while (padding < 2 && padding < length && data.charAt(length - 1 - padding) == '=') {
+            padding++;
+        }
         int whole = length / 4 * 3;
         int rest = length % 4;
         return whole + (rest == 0 ? 0 : rest - 1) - padding;

@@ -44,7 +44,7 @@ public record NetLimits(double messagesPerSecond, double burst, Duration idleTim
     public static final Duration DEFAULT_HELLO_DEADLINE = Duration.ofSeconds(5);
 
     /** Connections that may wait for their {@code Hello} at once by default. */
-    public static final int DEFAULT_MAX_WAITING_FOR_HELLO = 64;
+    public static final int DEFAULT_MAX_WAITING_FOR_HELLO = 256;
 
     /** Bytes waiting for all clients together by default: 256 MiB. */
     public static final long DEFAULT_MAX_PENDING_BYTES_IN_ALL = 256L << 20;
@@ -61,7 +61,7 @@ public record NetLimits(double messagesPerSecond, double burst, Duration idleTim
     /**
      * 2,000 lines per second (burst 4,000), 120 s idle, 10 s behind at most, 16 MiB waiting for one
      * client and 256 MiB for all, 30 s to finish a line, 1,024 connections, 5 s to say {@code Hello}
-     * and 64 connections waiting to, 8 MiB of models per connection and 32 MiB in all, 16 large lines
+     * and 256 connections waiting to, 8 MiB of models per connection and 32 MiB in all, 16 large lines
      * at once.
      */
     public static final NetLimits DEFAULT = new NetLimits(2_000, 4_000, Duration.ofSeconds(120),
@@ -84,8 +84,8 @@ public record NetLimits(double messagesPerSecond, double burst, Duration idleTim
         positive(lineDeadline, "lineDeadline");
         positive(helloDeadline, "helloDeadline");
         if (maxConnections < 1 || maxWaitingForHello < 1 || largeLinesAtOnce < 1) {
-            throw new IllegalArgumentException("maxConnections, maxWaitingForHello and largeLinesAtOnce must be at least"
-                    + " 1, was " + maxConnections + ", " + maxWaitingForHello + " and " + largeLinesAtOnce);
+            throw new IllegalArgumentException("maxConnections, maxWaitingForHello and largeLinesAtOnce must be at"
+                    + " least 1, was " + maxConnections + ", " + maxWaitingForHello + " and " + largeLinesAtOnce);
         }
         if (modelBytesPerConnection < 0 || modelBytesInAll < 0) {
             throw new IllegalArgumentException("modelBytesPerConnection and modelBytesInAll must not be negative, was "

@@ -45,14 +45,13 @@ final class NettySession implements ClientSession {
     /** Ticks whose messages were handed to the I/O thread and not yet written. */
     private final AtomicInteger unwritten = new AtomicInteger();
 
-    /** Made on the channel's I/O thread. */
-    NettySession(long id, Role role, Channel channel, SessionContext shared) {
+    /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
+    NettySession(long id, Role role, Channel channel, SessionContext shared, Outbox outbox) {
         this.id = id;
         this.role = role;
         this.channel = channel;
         this.shared = shared;
-        this.outbox = new Outbox(channel, role.wireName() + " client #" + id + " " + channel.remoteAddress(),
-                shared.limits(), shared.budget(), () -> end("connection closed"));
+        this.outbox = outbox;
     }
 
     @Override
@@ -127,11 +126,6 @@ final class NettySession implements ClientSession {
             return;
         }
         outbox.add(buffer, false);
-    }
-
-    /** On the channel's I/O thread: the channel turned writable or unwritable. */
-    void writabilityChanged() {
-        outbox.pump();
     }
 
     /** Tells the simulation, once, that this client is gone. */

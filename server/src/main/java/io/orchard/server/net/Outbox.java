@@ -1,19 +1,20 @@
 package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
-import io.netty.channel.Channel;
 import io.netty.buffer.Unpooled;
+import io.netty.channel.Channel;
+import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelPromise;
 import io.netty.util.AttributeKey;
-import io.orchard.protocol.MessageCodec;
-import java.nio.channels.ClosedChannelException;
-import io.netty.channel.ChannelFutureListener;
 import io.netty.util.concurrent.ScheduledFuture;
+import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
+import java.nio.channels.ClosedChannelException;
 import java.util.ArrayDeque;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongSupplier;
 import org.slf4j.LoggerFactory;
 
 /**
@@ -33,7 +34,7 @@ final class Outbox {
     /** The most handed to the channel at once. */
     private static final int SLICE = 64 * 1024;
 
-    /** How long a client that was cut off has at least to take its last error before the connection closes regardless. */
+    /** How long a client that was cut off has, at least, to take its last error before the connection closes. */
     private static final long LAST_WORDS_NANOS = 5_000_000_000L;
 
     private static final MessageCodec CODEC = new MessageCodec();
@@ -43,15 +44,16 @@ final class Outbox {
     /** One buffer to write: a tick's lines for this client alone, or a model shared with others. */
     private record Piece(ByteBuf bytes, boolean shared, long queuedAt, ChannelPromise promise) {}
 
-    /** The channel's outbox, once its client is welcomed. */
+    /** Where a channel keeps its outbox, for the stages that write to it. */
     static final AttributeKey<Outbox> KEY = AttributeKey.valueOf(Outbox.class, "outbox");
 
     private final Channel channel;
-    private final String who;
+    private final Object who;
     private final long graceNanos;
     private final long maxBytes;
     private final OutputBudget budget;
     private final Runnable onCut;
+    private final LongSupplier nanoTime;
     private final ArrayDeque<Piece> queue = new ArrayDeque<>();
     /** When each piece handed to the channel and not yet written was queued, oldest first. */
     private final ArrayDeque<Long> inFlight = new ArrayDeque<>();
@@ -60,11 +62,12 @@ final class Outbox {
     private volatile boolean cut;
 
     /**
-     * @param who   the client, for the log
+     * @param who   the client, for the log (its {@code toString()} when one is written)
      * @param onCut told once when the client is cut off, before its connection closes
      */
-    Outbox(Channel channel, String who, NetLimits limits, OutputBudget budget, Runnable onCut) {
+    Outbox(Channel channel, Object who, NetLimits limits, OutputBudget budget, Runnable onCut, LongSupplier nanoTime) {
         this.channel = channel;
+        this.nanoTime = nanoTime;
         this.who = who;
         this.graceNanos = limits.slowConsumerGrace().toNanos();
         this.maxBytes = limits.maxPendingBytes();
@@ -73,7 +76,6 @@ final class Outbox {
         long every = Math.max(10_000_000L, Math.min(1_000_000_000L, graceNanos / 4));
         this.watch = channel.eventLoop().scheduleAtFixedRate(this::check, every, every, TimeUnit.NANOSECONDS);
         budget.opened(this);
-        channel.attr(KEY).set(this);
         channel.closeFuture().addListener(closed -> closed());
     }
 
@@ -89,7 +91,7 @@ final class Outbox {
             fail(promise);
             return;
         }
-        queue.add(new Piece(bytes, shared, System.nanoTime(), promise));
+        queue.add(new Piece(bytes, shared, nanoTime.getAsLong(), promise));
         if (!shared) {
             count(bytes.readableBytes());
         }
@@ -155,7 +157,7 @@ final class Outbox {
         }
         Long oldest = inFlight.isEmpty() ? (queue.isEmpty() ? null : queue.peek().queuedAt()) : inFlight.peek();
         if (oldest != null) {
-            long behind = System.nanoTime() - oldest;
+            long behind = nanoTime.getAsLong() - oldest;
             if (behind > graceNanos) {
                 cut("this client has left what it was sent unread for " + behind / 1_000_000 + " ms, longer than the "
                         + graceNanos / 1_000_000 + " ms it may");
@@ -184,7 +186,8 @@ final class Outbox {
         // Straight to the channel, behind the little it holds: the outbox takes nothing more.
         channel.writeAndFlush(Unpooled.wrappedBuffer(CODEC.encodeLine(new ErrorMessage(0, ErrorCode.SLOW_CONSUMER,
                 why + "; closing")))).addListener(ChannelFutureListener.CLOSE);
-        channel.eventLoop().schedule(() -> channel.close(), Math.max(LAST_WORDS_NANOS, graceNanos), TimeUnit.NANOSECONDS);
+        long lastWords = Math.max(LAST_WORDS_NANOS, graceNanos);
+        channel.eventLoop().schedule(() -> channel.close(), lastWords, TimeUnit.NANOSECONDS);
     }
 
     private void drop() {

@@ -1,5 +1,6 @@
 package io.orchard.server.net;
 
+import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.ChannelPipeline;
@@ -37,12 +38,30 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
     private final Inbox inbox;
     private final byte[] token;
     private final ConnectionModels models = new ConnectionModels();
+    private Channel channel;
+    private Outbox outbox;
     private NettySession session;
 
     SessionHandler(SessionContext shared) {
         this.shared = shared;
         this.inbox = shared.inbox();
         this.token = shared.token() == null ? null : shared.token().getBytes(StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Everything the server writes to the client goes through its outbox from the start, so that a
+     * client that never reads cannot pile up even the errors its bad lines earn before its Hello.
+     */
+    @Override
+    public void channelActive(ChannelHandlerContext ctx) {
+        channel = ctx.channel();
+        outbox = new Outbox(channel, this, shared.limits(), shared.budget(), () -> {
+            if (session != null) {
+                session.end("connection closed");
+            }
+        }, System::nanoTime);
+        channel.attr(Outbox.KEY).set(outbox);
+        ctx.fireChannelActive();
     }
 
     @Override
@@ -82,7 +101,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             // A viewer only listens: silence is what it does, and what it fails to read is the outbox's care.
             pipeline.remove(IdleStateHandler.class);
         }
-        session = new NettySession(shared.sessionIds().incrementAndGet(), hello.role(), ctx.channel(), shared);
+        long id = shared.sessionIds().incrementAndGet();
+        session = new NettySession(id, hello.role(), ctx.channel(), shared, outbox);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);
@@ -120,8 +140,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
 
     @Override
     public void channelWritabilityChanged(ChannelHandlerContext ctx) {
-        if (session != null) {
-            session.writabilityChanged();
+        if (outbox != null) {
+            outbox.pump();
         }
         ctx.fireChannelWritabilityChanged();
     }
@@ -134,6 +154,11 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
         } else {
             ctx.fireUserEventTriggered(event);
         }
+    }
+
+    @Override
+    public String toString() {
+        return session != null ? session.toString() : "client " + (channel == null ? "?" : channel.remoteAddress());
     }
 
     @Override

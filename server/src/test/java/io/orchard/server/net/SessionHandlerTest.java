@@ -115,6 +115,21 @@ class SessionHandlerTest {
         assertThat(channel.isOpen()).isFalse();
     }
 
+    @Test
+    void aWelcomedViewerLeavesTheIdleTimeoutBehindAndAnAgentKeepsIt() {
+        for (Role role : Role.values()) {
+            EmbeddedChannel channel = new EmbeddedChannel(
+                    new HelloDeadline(new HelloQueue(8), java.time.Duration.ofSeconds(5)),
+                    new io.netty.handler.timeout.IdleStateHandler(120, 0, 0),
+                    new SessionHandler(SessionContext.of(inbox, null, NetLimits.DEFAULT)));
+            channel.writeInbound(new HelloMessage(1, 1, role, "test", null));
+            assertThat(channel.pipeline().get(HelloDeadline.class)).as("the Hello came").isNull();
+            assertThat(channel.pipeline().get(io.netty.handler.timeout.IdleStateHandler.class) != null)
+                    .as("idle timeout for a " + role.wireName()).isEqualTo(role == Role.AGENT);
+            channel.close();
+        }
+    }
+
     @Nested
     class WithAToken {
 
