@@ -28,8 +28,10 @@ import tools.jackson.databind.jsontype.NamedType;
  * long, or {@link #MAX_LARGE_LINE_BYTES} for the messages that carry a model or a world snapshot.
  * Decoding ignores fields it does not know (so newer peers can add fields) and refuses unknown
  * types, missing required fields, values of the wrong JSON type, fractions where integers belong,
- * duplicate keys and non-finite numbers. Every refusal is a {@link ProtocolException} whose message
- * names the message type, the field and the bad value; decoding throws nothing else.
+ * duplicate keys, non-finite numbers and bytes that are not strict UTF-8 (overlong forms,
+ * surrogates, code points beyond U+10FFFF: the error names the byte's offset in the line). Every
+ * refusal is a {@link ProtocolException} whose message names the message type, the field and the
+ * bad value; decoding throws nothing else.
  *
  * <p>Instances are immutable and safe to share between threads.
  */
@@ -120,6 +122,10 @@ public final class MessageCodec {
                 throw new ProtocolException(ErrorCode.LINE_TOO_LONG, (type == null ? "line" : MessageTypes.nameOf(type)
                         + " line") + " of " + length + " bytes is longer than the limit of " + MAX_LINE_BYTES);
             }
+        }
+        String encoding = Utf8.problem(utf8, length);
+        if (encoding != null) {
+            throw new ProtocolException(ErrorCode.MALFORMED_JSON, encoding);
         }
         Message message;
         try {

@@ -24,6 +24,9 @@ import java.util.concurrent.TimeUnit;
  */
 public final class NetServer implements AutoCloseable {
 
+    /** The kernel's send buffer for each client, asked for: 256 KiB (Linux doubles it for its own bookkeeping). */
+    static final int SEND_BUFFER_BYTES = 256 * 1024;
+
     private final EventLoopGroup boss;
     private final EventLoopGroup workers;
     private final Channel channel;
@@ -60,6 +63,9 @@ public final class NetServer implements AutoCloseable {
                     .option(ChannelOption.SO_BACKLOG, 1024)
                     .childOption(ChannelOption.TCP_NODELAY, true)
                     .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK, waterMark(limits))
+                    // A fixed send buffer, not one the kernel grows to megabytes: what a client leaves
+                    // unread then waits in its outbox, where the server sees how far behind it is.
+                    .childOption(ChannelOption.SO_SNDBUF, SEND_BUFFER_BYTES)
                     .childHandler(new ServerInitializer(new MessageCodec(), inbox, token, limits))
                     .bind(address).await();
             if (!bound.isSuccess()) {
@@ -102,11 +108,11 @@ public final class NetServer implements AutoCloseable {
     }
 
     /**
-     * A channel turns unwritable (its client is behind) at a quarter of the bytes that cut a client
-     * off, at most 16 MiB, so that the grace starts well before the cap.
+     * A channel turns unwritable once 256 KiB wait in it: what waits beyond waits in the client's
+     * {@link Outbox}, where it is counted and can be dropped.
      */
     static WriteBufferWaterMark waterMark(NetLimits limits) {
-        int high = (int) Math.min(16L << 20, Math.max(64L << 10, limits.maxPendingBytes() / 4));
+        int high = (int) Math.min(256L << 10, limits.maxPendingBytes());
         return new WriteBufferWaterMark(high / 2, high);
     }
 
