@@ -18,7 +18,6 @@ dependencies {
     implementation(libs.jsonschema.generator)
     implementation(libs.xchart)
 
-    testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)
@@ -31,6 +30,9 @@ application {
 }
 
 tasks.named<JavaExec>("run") {
+    // In the directory gradle was started from, as ./orchard runs, so that relative paths in the
+    // arguments (--out, --resume, --replay) mean what they say, not a path inside examples/.
+    workingDir = gradle.startParameter.currentDir
     // The launcher's subcommands read commands from the console.
     standardInput = System.`in`
 }
