@@ -53,6 +53,10 @@ public final class MessageCodec {
     private final ObjectReader reader;
     private final ObjectWriter writer;
 
+    /**
+     * A codec with Orchard's rules for reading lines: unknown fields are ignored, a required field that is missing
+     * or null, a fraction where an integer belongs and anything after the object are refused.
+     */
     public MessageCodec() {
         JsonMapper.Builder builder = JsonMapper.builder()
                 .annotationIntrospector(new RequiredUnlessNullable())

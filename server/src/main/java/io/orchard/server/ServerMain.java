@@ -56,6 +56,7 @@ public final class ServerMain {
         return OPTIONS.help() + "\nConsole commands: start, pause, continue, status, checkpoint [FILE], stop.\n";
     }
 
+    /** Runs the server with the command line {@code args} (see {@link #help()}) and exits with its status. */
     public static void main(String[] args) throws Exception {
         System.exit(run(Arrays.asList(args), System.in, System.out, System.err));
     }

@@ -73,6 +73,7 @@ public record ViewerOptions(String host, int port, String token, Path replay, do
             .value("measure", "SECONDS", "measure frames per second over SECONDS of wall-clock time, then exit",
                     null);
 
+    /** Keeps its own unmodifiable copy of the lists. */
     public ViewerOptions {
         shots = List.copyOf(shots);
     }

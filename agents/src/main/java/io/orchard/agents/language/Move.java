@@ -17,6 +17,7 @@ public record Move(Direction direction, @Nullable Double distance) implements Go
     /** The longest walk one instruction may ask for: farther than across any world Orchard makes. */
     public static final double MAX_DISTANCE = 1000;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Move {
         Objects.requireNonNull(direction, "direction");
         checkDistance(distance);

@@ -27,6 +27,8 @@ public final class Options {
     private final Map<String, Option> options = new LinkedHashMap<>();
 
     /**
+     * A command's options, none declared yet.
+     *
      * @param command how the command is typed, for the usage line
      * @param summary one sentence on what it does
      */

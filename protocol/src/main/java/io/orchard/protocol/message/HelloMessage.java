@@ -21,6 +21,7 @@ public record HelloMessage(long seq,
                            String client,
                            @Nullable String token) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public HelloMessage {
         Checks.nonNegative(seq, "seq");
         if (protocolVersion <= 0) {

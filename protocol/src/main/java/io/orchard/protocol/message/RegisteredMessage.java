@@ -24,6 +24,7 @@ public record RegisteredMessage(long seq,
                                 double heading,
                                 @Nullable String resumeToken) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RegisteredMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

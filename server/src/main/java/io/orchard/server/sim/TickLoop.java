@@ -30,6 +30,7 @@ public final class TickLoop implements Runnable {
     private long due;
     private boolean wasRunning;
 
+    /** A loop that ticks {@code sim}, on the thread that runs it, until stopped. */
     public TickLoop(Simulation sim) {
         this.sim = sim;
     }
