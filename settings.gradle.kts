@@ -11,4 +11,4 @@ dependencyResolutionManagement {
     }
 }
 
-include("protocol", "server", "agents", "viewer", "examples")
+include("protocol", "server", "agents", "viewer", "bom", "examples")

@@ -1,8 +1,10 @@
 plugins {
     `java-library`
+    `maven-publish`
 }
 
 apply(from = rootProject.file("gradle/java-conventions.gradle.kts"))
+apply(from = rootProject.file("gradle/publish-conventions.gradle.kts"))
 
 group = "io.orchard"
 version = "0.1.0-SNAPSHOT"
@@ -17,7 +19,6 @@ dependencies {
     // Agents are tested against a real server, which they never depend on otherwise.
     testImplementation(project(":server"))
     testImplementation(libs.logback.classic)
-    testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)

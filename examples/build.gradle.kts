@@ -19,7 +19,6 @@ dependencies {
     implementation(libs.xchart)
     implementation(libs.picocli)
 
-    testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)
@@ -32,6 +31,9 @@ application {
 }
 
 tasks.named<JavaExec>("run") {
+    // In the directory gradle was started from, as ./orchard runs, so that relative paths in the
+    // arguments (--out, --resume, --replay) mean what they say, not a path inside examples/.
+    workingDir = gradle.startParameter.currentDir
     // The launcher's subcommands read commands from the console.
     standardInput = System.`in`
 }

@@ -48,6 +48,10 @@ public final class MessageCodec {
     private final ObjectReader reader;
     private final ObjectWriter writer;
 
+    /**
+     * A codec with Orchard's rules for reading lines: unknown fields are ignored, a required field that is missing
+     * or null, a fraction where an integer belongs and anything after the object are refused.
+     */
     public MessageCodec() {
         // Fields a newer peer adds are ignored; everything else is read as strictly as any file.
         JsonMapper.Builder builder = StrictJson.builder()

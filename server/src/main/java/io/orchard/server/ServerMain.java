@@ -124,6 +124,7 @@ public final class ServerMain implements Callable<Integer> {
         this.err = err;
     }
 
+    /** Runs the server with the command line {@code args} and exits with its status. */
     public static void main(String[] args) {
         System.exit(run(Arrays.asList(args), System.in, System.out, System.err));
     }

@@ -35,6 +35,7 @@ public final class ViewerMain {
     private ViewerMain() {
     }
 
+    /** Runs the viewer with the command line {@code args} and exits with its status. */
     public static void main(String[] args) {
         int status = run(Arrays.asList(args), System.out, System.err);
         System.out.flush();

@@ -14,6 +14,7 @@ import java.util.Objects;
  */
 public record Head(Sector direction, @Nullable Double distance) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Head {
         Objects.requireNonNull(direction, "direction");
         RelativeMove.checkDistance(distance);

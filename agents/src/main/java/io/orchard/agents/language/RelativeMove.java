@@ -17,6 +17,7 @@ public record RelativeMove(Direction direction, @Nullable Double distance) imple
     /** The longest walk one instruction may ask for: farther than across any world Orchard makes. */
     public static final double MAX_DISTANCE = 1000;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RelativeMove {
         Objects.requireNonNull(direction, "direction");
         checkDistance(distance);

@@ -17,6 +17,7 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
     /** The largest model, in bytes before Base64 encoding: 4 MiB. */
     public static final int MAX_MODEL_BYTES = 4 * 1024 * 1024;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ModelSpec {
         Checks.present(format, "format");
         if (format == ModelFormat.BUNDLED) {

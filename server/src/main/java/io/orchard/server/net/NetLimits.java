@@ -67,6 +67,7 @@ public record NetLimits(double messagesPerSecond, double burst, Duration idleTim
     public static final NetLimits DEFAULT = new NetLimits(2_000, 4_000, Duration.ofSeconds(120),
             Duration.ofSeconds(10), 16L << 20);
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public NetLimits {
         if (!(messagesPerSecond > 0) || !(burst >= 1)) {
             throw new IllegalArgumentException("messagesPerSecond must be > 0 and burst >= 1, was "

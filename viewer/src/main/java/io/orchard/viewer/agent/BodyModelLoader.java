@@ -36,6 +36,7 @@ public final class BodyModelLoader {
     private final AssetManager assets;
     private final ModelLimits limits;
 
+    /** A loader that reads models through {@code assets}, refusing those beyond {@code limits}. */
     public BodyModelLoader(AssetManager assets, ModelLimits limits) {
         this.assets = Objects.requireNonNull(assets, "assets");
         this.limits = Objects.requireNonNull(limits, "limits");

@@ -88,6 +88,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         }
     }
 
+    /** The agents of {@code mirror}, moved by {@code clock}, with models loaded within {@code limits}. */
     public AgentsState(WorldMirror mirror, SimClock clock, ModelLimits limits) {
         this.mirror = mirror;
         this.clock = clock;

@@ -53,6 +53,7 @@ public final class SelectionState extends BaseAppState implements WorldMirror.Li
     private Sight coneSight;
     private Sighting sighting = Sighting.NOTHING;
 
+    /** The selection among the agents of {@code mirror}, drawn at the time of {@code clock}. */
     public SelectionState(WorldMirror mirror, SimClock clock) {
         this.mirror = mirror;
         this.clock = clock;

@@ -15,6 +15,7 @@ import java.util.Objects;
  */
 public record Motion(Vec3 from, Vec3 to, double startTime, double duration) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Motion {
         Objects.requireNonNull(from, "from");
         Objects.requireNonNull(to, "to");
