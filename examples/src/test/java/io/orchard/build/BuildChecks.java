@@ -40,7 +40,8 @@ final class BuildChecks {
             entry("jmh", "jmh.version"),
             entry("jazzer", "jazzer.version"),
             entry("xchart", "xchart.version"),
-            entry("picocli", "picocli.version"));
+            entry("picocli", "picocli.version"),
+            entry("archunit", "archunit.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

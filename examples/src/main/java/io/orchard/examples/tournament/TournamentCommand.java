@@ -3,10 +3,12 @@ package io.orchard.examples.tournament;
 import io.orchard.examples.OptionValues;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
+import io.orchard.examples.firstagent.FirstAgent;
 import io.orchard.examples.match.Lineup;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -117,7 +119,7 @@ public final class TournamentCommand implements Callable<Integer> {
         @Override
         public Lineup convert(String list) {
             try {
-                return Lineup.parse(list);
+                return Lineup.parse(list, Map.of("FirstAgent", () -> new FirstAgent("FirstAgent")));
             } catch (IllegalArgumentException e) {
                 throw new TypeConversionException(e.getMessage());
             }
