@@ -40,6 +40,7 @@ public record ViewerOptions(String host, int port, String token, Path replay, do
     /** The headless watchdog's base time in seconds, before the time the viewer must wait for a live game. */
     public static final double BASE_TIMEOUT = 60;
 
+    /** Keeps its own copy of the screenshots asked for, so the options cannot change afterwards. */
     public ViewerOptions {
         shots = List.copyOf(shots);
     }

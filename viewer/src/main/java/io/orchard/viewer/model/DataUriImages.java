@@ -49,6 +49,7 @@ public final class DataUriImages {
         }
     }
 
+    /** Whether {@code uri} starts with {@code data:}, in any case. */
     public static boolean isDataUri(String uri) {
         return uri.regionMatches(true, 0, "data:", 0, 5);
     }
@@ -83,6 +84,7 @@ public final class DataUriImages {
         }
     }
 
+    /** Refuses an image wider or taller than {@code maxSize} pixels, before its pixels are decoded. */
     public static void checkSize(int width, int height, int maxSize, String where)
             throws ModelException {
         if (width > maxSize || height > maxSize) {

@@ -33,11 +33,13 @@ public final class ModelException extends Exception {
 
     private final Kind kind;
 
+    /** A problem of the given kind, with a message that says what and where. */
     public ModelException(Kind kind, String message) {
         super(message);
         this.kind = kind;
     }
 
+    /** A problem of the given kind caused by another exception, such as a parser's. */
     public ModelException(Kind kind, String message, Throwable cause) {
         super(message, cause);
         this.kind = kind;

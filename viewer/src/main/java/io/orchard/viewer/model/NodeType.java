@@ -10,10 +10,12 @@ import java.util.Optional;
 public record NodeType(String name, NodeKind kind, String containerField,
                        Map<String, FieldDef> fields) {
 
+    /** Copies the fields, so the type cannot change afterwards. */
     public NodeType {
         fields = Map.copyOf(fields);
     }
 
+    /** The field named {@code fieldName}, or empty if the type has none of that name. */
     public Optional<FieldDef> field(String fieldName) {
         return Optional.ofNullable(fields.get(fieldName));
     }

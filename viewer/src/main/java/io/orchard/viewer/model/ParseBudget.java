@@ -15,6 +15,7 @@ public final class ParseBudget {
     private int depth;
     private long values;
 
+    /** An empty budget, with nothing counted yet, for one parse against {@code limits}. */
     public ParseBudget(ModelLimits limits) {
         this.limits = limits;
     }
@@ -70,10 +71,12 @@ public final class ParseBudget {
         }
     }
 
+    /** Leaves one level of nesting. */
     public void exit() {
         depth--;
     }
 
+    /** How many levels of nesting are open now. */
     public int depth() {
         return depth;
     }

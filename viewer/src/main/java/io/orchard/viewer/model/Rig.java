@@ -13,22 +13,31 @@ import java.util.Set;
  */
 public interface Rig {
 
+    /** Moves the agent from {@code from} to {@code to} over {@code duration} seconds from {@code startTime}. */
     void moveTo(Vector3f from, Vector3f to, double startTime, double duration);
 
+    /** Sets the rotation of the whole agent. */
     void setRotation(Quaternion rotation);
 
+    /** Sets the rotation of the named joint, or throws if the model has no such joint. */
     void setJointRotation(String joint, Quaternion rotation) throws ModelException;
 
+    /** Starts the named animation at time {@code now}, looping or once. */
     void startAnimation(String name, boolean loop, double now) throws ModelException;
 
+    /** Stops the named animation, leaving the pose where it is. */
     void stopAnimation(String name) throws ModelException;
 
+    /** Whether the model has a node of that name: a DEF name, or a glTF node or joint name. */
     boolean hasNode(String name);
 
+    /** The names {@link #setJointRotation} accepts. */
     Set<String> jointNames();
 
+    /** The DEF names of the model's TimeSensors (empty for glTF). */
     Set<String> timeSensorNames();
 
+    /** The names {@link #startAnimation} accepts. */
     Set<String> animationNames();
 
     /** Advances to simulated time {@code time}, {@code elapsed} seconds after the last call. */

@@ -16,6 +16,7 @@ public final class Rotations {
                 values[offset + 3]);
     }
 
+    /** The rotation by {@code angle} radians about the axis {@code (x, y, z)}; a zero axis means none. */
     public static Quaternion fromAxisAngle(float x, float y, float z, float angle) {
         double length = Math.sqrt((double) x * x + (double) y * y + (double) z * z);
         if (length < EPSILON) {

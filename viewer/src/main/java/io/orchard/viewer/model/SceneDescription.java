@@ -43,6 +43,7 @@ public final class SceneDescription {
         this.routes = List.copyOf(routes);
     }
 
+    /** The top-level nodes, in file order. */
     public List<SceneNode> roots() {
         return roots;
     }
@@ -52,6 +53,7 @@ public final class SceneDescription {
         return defs;
     }
 
+    /** The ROUTEs whose nodes this viewer animates, resolved and type-checked, in file order. */
     public List<ResolvedRoute> routes() {
         return routes;
     }
@@ -68,10 +70,12 @@ public final class SceneDescription {
         private final List<Route> routes = new ArrayList<>();
         private final ParseBudget budget;
 
+        /** A collector that counts each {@code USE} against {@code budget}. */
         public Collector(ParseBudget budget) {
             this.budget = budget;
         }
 
+        /** Makes {@code name} usable by later {@code USE}s and ROUTEs; a repeated name replaces the earlier node. */
         public void define(String name, SceneNode node) {
             defs.put(name, node);
         }
@@ -88,10 +92,12 @@ public final class SceneDescription {
             return node;
         }
 
+        /** Keeps a ROUTE to resolve in {@link #finish}, once every DEF name is known. */
         public void route(Route route) {
             routes.add(route);
         }
 
+        /** Resolves and type-checks the ROUTEs and returns the description; ROUTEs to unknown types are skipped. */
         public SceneDescription finish(List<SceneNode> roots) throws ModelException {
             List<ResolvedRoute> resolved = new ArrayList<>();
             for (Route route : routes) {

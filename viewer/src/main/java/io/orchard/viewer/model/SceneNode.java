@@ -23,12 +23,14 @@ public final class SceneNode {
     private int weight = 1;
     private int height = 1;
 
+    /** A node of type {@code typeName} read at {@code location}, with no fields set yet. */
     public SceneNode(String typeName, String location) {
         this.typeName = typeName;
         this.type = NodeSchema.find(typeName).orElse(null);
         this.location = location;
     }
 
+    /** The type name as written, such as {@code "Transform"}. */
     public String typeName() {
         return typeName;
     }
@@ -38,18 +40,22 @@ public final class SceneNode {
         return Optional.ofNullable(type);
     }
 
+    /** Whether the loader knows the node's type, that is, can build it. */
     public boolean isKnown() {
         return type != null;
     }
 
+    /** Whether the node is of type {@code name}. */
     public boolean is(String name) {
         return typeName.equals(name);
     }
 
+    /** The DEF name, or empty if the node has none. */
     public Optional<String> defName() {
         return Optional.ofNullable(defName);
     }
 
+    /** Sets the DEF name. */
     public void setDefName(String name) {
         this.defName = name;
     }
@@ -87,10 +93,12 @@ public final class SceneNode {
         this.height = maxHeight + 1;
     }
 
+    /** Sets a field to a value in the representation {@link FieldType} describes. */
     public void set(String field, Object value) {
         fields.put(field, value);
     }
 
+    /** Whether the file set the field (a default does not count). */
     public boolean has(String field) {
         return fields.containsKey(field);
     }
@@ -112,6 +120,7 @@ public final class SceneNode {
         return result;
     }
 
+    /** The field's value, or its default if the file did not set it; null for an unset field of an unknown type. */
     public Object get(String field) {
         Object value = fields.get(field);
         if (value != null || fields.containsKey(field)) {
@@ -127,31 +136,38 @@ public final class SceneNode {
         return def.defaultValue();
     }
 
+    /** The value of an SFBool field. */
     public boolean bool(String field) {
         return (Boolean) get(field);
     }
 
+    /** The value of an SFInt32 field. */
     public int integer(String field) {
         return (Integer) get(field);
     }
 
+    /** The value of an SFFloat or SFTime field. */
     public double number(String field) {
         return (Double) get(field);
     }
 
+    /** The numbers of a vector, colour or rotation field, or of a numeric MF field but MFInt32, flat. */
     public float[] floats(String field) {
         return (float[]) get(field);
     }
 
+    /** The numbers of an MFInt32 field. */
     public int[] ints(String field) {
         return (int[]) get(field);
     }
 
+    /** The values of an MFString field. */
     @SuppressWarnings("unchecked")
     public List<String> strings(String field) {
         return (List<String>) get(field);
     }
 
+    /** The node in an SFNode field, or null if it holds none. */
     public SceneNode node(String field) {
         return (SceneNode) get(field);
     }
@@ -165,6 +181,7 @@ public final class SceneNode {
         return node != null && node.is(typeName) ? node : null;
     }
 
+    /** The nodes in an MFNode field; empty if the field is unset and the type unknown. */
     @SuppressWarnings("unchecked")
     public List<SceneNode> nodes(String field) {
         Object value = get(field);

@@ -29,6 +29,7 @@ public final class EventGraphRig implements Rig {
     private final LiveTimeSensor moverClock;
     private MoveTween tween;
 
+    /** Finds the Transform named after the agent and, if they exist and are ROUTEd, its Mover and TSMover. */
     public EventGraphRig(String agentName, SceneBuilder.Result scene) {
         this.agentName = agentName;
         this.root = scene.root();

@@ -66,6 +66,7 @@ public final class SceneBuilder {
         this.appearances = new Appearances(assets, limits);
     }
 
+    /** Builds the spatials, under a root named {@code rootName}, and the event graph of {@code scene}. */
     public static Result build(SceneDescription scene, String rootName, AssetManager assets,
                                ModelLimits limits) throws ModelException {
         return new SceneBuilder(assets, limits).run(scene, rootName);

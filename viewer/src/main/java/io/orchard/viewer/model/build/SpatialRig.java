@@ -37,6 +37,7 @@ public final class SpatialRig implements Rig {
     private final List<AnimComposer> composers = new ArrayList<>();
     private MoveTween tween;
 
+    /** Finds the named nodes, joints and animation composers under {@code root}, and disables the composers. */
     public SpatialRig(String agentName, Node root) {
         this.root = root;
         root.depthFirstTraversal(spatial -> {

@@ -32,10 +32,12 @@ public final class EventGraph {
     private final Map<Source, List<Target>> routes = new HashMap<>();
     private final List<LiveTimeSensor> sensors = new ArrayList<>();
 
+    /** Adds a TimeSensor, which will produce events at each step. */
     public void addSensor(LiveTimeSensor sensor) {
         sensors.add(sensor);
     }
 
+    /** Adds a ROUTE: events {@code from} sends on {@code fromField} reach {@code toField} of {@code to}. */
     public void addRoute(LiveNode from, String fromField, LiveNode to, String toField) {
         routes.computeIfAbsent(new Source(from, fromField), s -> new ArrayList<>())
                 .add(new Target(to, toField));

@@ -15,7 +15,12 @@ public final class LiveInterpolator implements LiveNode {
 
     /** The three interpolator types, by how many numbers one key value has. */
     public enum Kind {
-        POSITION(3), ORIENTATION(4), SCALAR(1);
+        /** A PositionInterpolator: three numbers a key value. */
+        POSITION(3),
+        /** An OrientationInterpolator: an axis-angle rotation, four numbers a key value. */
+        ORIENTATION(4),
+        /** A ScalarInterpolator: one number a key value. */
+        SCALAR(1);
 
         final int components;
 
@@ -74,6 +79,7 @@ public final class LiveInterpolator implements LiveNode {
         return "Interpolator '" + name + "'";
     }
 
+    /** The interpolator's type. */
     public Kind kind() {
         return kind;
     }

@@ -23,7 +23,9 @@ import java.util.List;
  */
 public final class LiveMaterial implements LiveNode {
 
+    /** The jME material definition for lit shapes. */
     public static final String LIGHTING = "Common/MatDefs/Light/Lighting.j3md";
+    /** The jME material definition for unlit shapes. */
     public static final String UNSHADED = "Common/MatDefs/Misc/Unshaded.j3md";
 
     /** How one jME material shows this VRML Material. */
@@ -38,6 +40,7 @@ public final class LiveMaterial implements LiveNode {
     private float shininess;
     private float transparency;
 
+    /** The material as the Material node {@code source} describes it, not yet shown by any shape. */
     public LiveMaterial(SceneNode source) {
         this.diffuse = color(source.floats("diffuseColor"));
         this.emissive = color(source.floats("emissiveColor"));
@@ -55,6 +58,7 @@ public final class LiveMaterial implements LiveNode {
         return isBlack(diffuse) && isBlack(specular) && !isBlack(emissive);
     }
 
+    /** Adds a jME material to keep in step with this Material, and sets its colours now. */
     public void attach(Use use) {
         uses.add(use);
         apply(use);

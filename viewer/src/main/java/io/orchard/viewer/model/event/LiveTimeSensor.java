@@ -62,6 +62,7 @@ public final class LiveTimeSensor implements LiveNode {
         return "TimeSensor '" + name + "'";
     }
 
+    /** The length of one cycle, in seconds. */
     public double cycleInterval() {
         return cycleInterval;
     }

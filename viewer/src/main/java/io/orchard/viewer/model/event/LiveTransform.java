@@ -32,6 +32,7 @@ public final class LiveTransform implements LiveNode {
     private Quaternion rotation;
     private boolean warnedScaleOrientation;
 
+    /** The Transform the node {@code source} describes, not yet shown by any jME node. */
     public LiveTransform(SceneNode source) {
         this.name = source.defName().orElse("Transform");
         this.translation = vector(source.floats("translation"));
@@ -54,11 +55,13 @@ public final class LiveTransform implements LiveNode {
         return node;
     }
 
+    /** Sets the translation of every instance, without sending an event. */
     public void setTranslation(Vector3f value) {
         translation.set(value);
         applyAll();
     }
 
+    /** Sets the rotation of every instance, without sending an event. */
     public void setRotation(Quaternion value) {
         rotation = value.clone();
         applyAll();

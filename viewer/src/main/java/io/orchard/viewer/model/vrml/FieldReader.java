@@ -22,6 +22,7 @@ public final class FieldReader {
 
     private final ParseBudget budget;
 
+    /** A reader that counts every number it reads against {@code budget}. */
     public FieldReader(ParseBudget budget) {
         this.budget = budget;
     }

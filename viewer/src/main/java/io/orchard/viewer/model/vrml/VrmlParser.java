@@ -52,6 +52,7 @@ public final class VrmlParser {
         this.scene = new SceneDescription.Collector(budget);
     }
 
+    /** Parses a VRML97 file, checking it against {@code limits}; the bytes must be UTF-8. */
     public static SceneDescription parse(byte[] bytes, ModelLimits limits) throws ModelException {
         ParseBudget.checkSize(bytes, limits, "VRML97");
         String text = decode(bytes);

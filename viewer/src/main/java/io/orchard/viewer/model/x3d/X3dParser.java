@@ -68,6 +68,7 @@ public final class X3dParser {
         this.scene = new SceneDescription.Collector(budget);
     }
 
+    /** Parses an X3D XML file, checking it against {@code limits}. */
     public static SceneDescription parse(byte[] bytes, ModelLimits limits) throws ModelException {
         ParseBudget.checkSize(bytes, limits, "X3D");
         XMLStreamReader xml = null;
