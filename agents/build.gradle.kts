@@ -12,6 +12,7 @@ description = "AgentController, the base every Orchard agent extends, its behavi
 
 dependencies {
     api(project(":protocol"))
+    implementation(project(":cli"))
     implementation(libs.slf4j.api)
     // AgentMain hands its picocli CommandLines to launchers.
     api(libs.picocli)

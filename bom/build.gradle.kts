@@ -13,6 +13,7 @@ description = "The versions of Orchard's published modules, which are released t
 dependencies {
     constraints {
         api(project(":protocol"))
+        api(project(":cli"))
         api(project(":server"))
         api(project(":agents"))
         api(project(":viewer"))

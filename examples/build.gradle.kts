@@ -10,6 +10,7 @@ description = "Runnable programs: the orchard launcher, the demo, embedding, a f
 
 dependencies {
     implementation(project(":protocol"))
+    implementation(project(":cli"))
     implementation(project(":server"))
     implementation(project(":agents"))
     implementation(project(":viewer"))

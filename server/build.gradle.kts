@@ -17,6 +17,7 @@ val runLogging by configurations.creating
 
 dependencies {
     api(project(":protocol"))
+    implementation(project(":cli"))
     implementation(libs.netty.handler)
     implementation(libs.netty.codec.base)
     implementation(libs.jts.core)

@@ -17,6 +17,7 @@ val runLogging by configurations.creating
 
 dependencies {
     api(project(":protocol"))
+    implementation(project(":cli"))
     // The viewer is a jME application made of app states, so jME's core types are part of its API.
     api(libs.jme3.core)
     implementation(libs.jme3.desktop)

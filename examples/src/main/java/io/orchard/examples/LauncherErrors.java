@@ -1,7 +1,7 @@
 package io.orchard.examples;
 
+import io.orchard.cli.CommandLineErrors;
 import java.io.PrintStream;
-import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.IExecutionExceptionHandler;
 import picocli.CommandLine.IParameterExceptionHandler;
@@ -10,19 +10,17 @@ import picocli.CommandLine.ParseResult;
 import picocli.CommandLine.UnmatchedArgumentException;
 
 /**
- * How the launcher answers what goes wrong: a wrong command line with
- * {@code orchard <command>: <what is wrong>} and exit status 2, naming the option, the value and
- * what was expected; a command that fails with {@code orchard <command>: <why>} and status 1.
+ * How the launcher answers what goes wrong: as every command does ({@link CommandLineErrors}), but
+ * an unknown word where the launcher expects a command gets the list of the commands.
  */
 final class LauncherErrors implements IParameterExceptionHandler, IExecutionExceptionHandler {
 
-    static final int FAILED = 1;
-    static final int USAGE = 2;
-
     private final PrintStream err;
+    private final CommandLineErrors commands;
 
     LauncherErrors(PrintStream err) {
         this.err = err;
+        this.commands = new CommandLineErrors(err);
     }
 
     @Override
@@ -34,11 +32,7 @@ final class LauncherErrors implements IParameterExceptionHandler, IExecutionExce
         if (failed.getParent() == null && args.length == 2 && args[0].equals("help")) {
             return unknown(args[1], failed); // help of a command that does not exist
         }
-        String name = failed.getCommandSpec().qualifiedName();
-        err.println(name + ": " + describe(e));
-        UnmatchedArgumentException.printSuggestions(e, err);
-        err.println("Run ./" + name + " --help for its options.");
-        return USAGE;
+        return commands.handleParseException(e, args);
     }
 
     /** An unknown word where the launcher expects a command: says so and lists the commands. */
@@ -49,26 +43,11 @@ final class LauncherErrors implements IParameterExceptionHandler, IExecutionExce
         err.print(launcher.getHelp().commandList());
         err.println();
         err.println("Run ./orchard --help for usage.");
-        return USAGE;
+        return CommandLineErrors.USAGE;
     }
 
     @Override
     public int handleExecutionException(Exception e, CommandLine failed, ParseResult parsed) {
-        err.println(failed.getCommandSpec().qualifiedName() + ": " + (e.getMessage() == null ? e : e.getMessage()));
-        if (e instanceof RuntimeException) {
-            e.printStackTrace(err); // a defect rather than a condition the message explains
-        }
-        return FAILED;
-    }
-
-    /** What is wrong with a command line, as a phrase to follow "orchard <command>: ". */
-    static String describe(ParameterException e) {
-        if (e instanceof UnmatchedArgumentException unmatched && !unmatched.isUnknownOption()) {
-            List<String> args = unmatched.getUnmatched();
-            return "unexpected argument" + (args.size() == 1 ? " " : "s ")
-                    + String.join(", ", args.stream().map(arg -> "'" + arg + "'").toList()) + " (options start with --)";
-        }
-        String message = e.getMessage();
-        return message.isEmpty() ? message : Character.toLowerCase(message.charAt(0)) + message.substring(1);
+        return commands.handleExecutionException(e, failed, parsed);
     }
 }

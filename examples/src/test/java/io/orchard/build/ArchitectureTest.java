@@ -16,7 +16,8 @@ import org.junit.jupiter.api.Test;
 
 /**
  * The directions the modules and packages depend in, read from the compiled classes of every
- * module: protocol under everything, server, agents and viewer beside each other, examples on top;
+ * module: protocol and cli (the command lines' shared converters and errors) under everything,
+ * knowing nothing of each other; server, agents and viewer beside each other, examples on top;
  * Netty and JTS only in the server (JTS only in its world), jMonkeyEngine only in the viewer; no
  * cycle between packages, and none between the classes of the server's simulation.
  */
@@ -41,8 +42,22 @@ class ArchitectureTest {
         @Test
         void protocolDependsOnNoOtherModule() {
             check(noClasses().that().resideInAPackage("io.orchard.protocol..")
-                    .should().dependOnClassesThat().resideInAnyPackage("io.orchard.server..", "io.orchard.agents..",
-                            "io.orchard.viewer..", "io.orchard.examples.."));
+                    .should().dependOnClassesThat().resideInAnyPackage("io.orchard.cli..", "io.orchard.server..",
+                            "io.orchard.agents..", "io.orchard.viewer..", "io.orchard.examples.."));
+        }
+
+        @Test
+        void cliDependsOnNoOtherModule() {
+            check(noClasses().that().resideInAPackage("io.orchard.cli..")
+                    .should().dependOnClassesThat().resideInAnyPackage("io.orchard.protocol..", "io.orchard.server..",
+                            "io.orchard.agents..", "io.orchard.viewer..", "io.orchard.examples.."));
+        }
+
+        @Test
+        void cliDependsOnPicocliAlone() {
+            check(noClasses().that().resideInAPackage("io.orchard.cli..")
+                    .should().dependOnClassesThat().resideInAnyPackage("tools.jackson..", "io.netty..",
+                            "org.locationtech..", "com.jme3..", "org.slf4j.."));
         }
 
         @Test

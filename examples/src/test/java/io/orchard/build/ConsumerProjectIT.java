@@ -72,7 +72,7 @@ class ConsumerProjectIT {
 
         assertThat(classpath).filteredOn(entry -> entry.contains("/io/orchard/"))
                 .as("Orchard's jars on the consumer's class path")
-                .hasSize(3) // server, agents and the protocol they share
+                .hasSize(4) // server, agents and the protocol and cli they share
                 .allMatch(entry -> entry.startsWith(repository.toString()));
         assertThat(classpath).as("the consumer's run-time class path")
                 .noneMatch(entry -> TEST_LIBRARIES.stream().anyMatch(entry::contains));

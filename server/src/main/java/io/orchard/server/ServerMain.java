@@ -1,5 +1,7 @@
 package io.orchard.server;
 
+import io.orchard.cli.CommandLineErrors;
+import io.orchard.cli.Seed;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Phase;
@@ -50,7 +52,7 @@ public final class ServerMain implements Callable<Integer> {
             description = "Address to listen on; 0.0.0.0 for every interface (default: ${DEFAULT-VALUE})")
     private String bind;
 
-    @Option(names = "--seed", paramLabel = "N", converter = CommandLines.Seed.class,
+    @Option(names = "--seed", paramLabel = "N", converter = Seed.class,
             description = "Seed of the world; drawn and printed when absent")
     private Long seed;
 
@@ -131,7 +133,7 @@ public final class ServerMain implements Callable<Integer> {
 
     /** Runs the command line as {@code orchard server}; returns the process exit status. */
     public static int run(List<String> args, InputStream console, PrintStream out, PrintStream err) {
-        return CommandLines.execute(command(console, out, err).setCommandName("orchard server"), args, err);
+        return CommandLineErrors.execute(command(console, out, err).setCommandName("orchard server"), args, err);
     }
 
     /** The help text of the server's command line. */

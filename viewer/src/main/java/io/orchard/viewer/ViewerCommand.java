@@ -1,5 +1,6 @@
 package io.orchard.viewer;
 
+import io.orchard.cli.Port;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.viewer.state.ReplayState;
 import io.orchard.viewer.state.Shot;
@@ -40,7 +41,7 @@ final class ViewerCommand implements Callable<Integer> {
     private String host;
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + ViewerOptions.DEFAULT_PORT,
-            converter = CommandLines.Port.class, description = "The server's port (default: ${DEFAULT-VALUE})")
+            converter = Port.class, description = "The server's port (default: ${DEFAULT-VALUE})")
     private int port;
 
     @Option(names = "--token", paramLabel = "SECRET", description = "The server's token, when it requires one")

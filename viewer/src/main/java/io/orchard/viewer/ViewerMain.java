@@ -2,6 +2,7 @@ package io.orchard.viewer;
 
 import com.jme3.system.AppSettings;
 import com.jme3.system.JmeContext;
+import io.orchard.cli.CommandLineErrors;
 import io.orchard.viewer.replay.Recording;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -54,7 +55,7 @@ public final class ViewerMain {
      * graphics driver may leave a thread behind after a watchdog timeout.
      */
     public static int run(List<String> args, PrintStream out, PrintStream err) {
-        return CommandLines.execute(command(out, err).setCommandName("orchard viewer"), args, err);
+        return CommandLineErrors.execute(command(out, err).setCommandName("orchard viewer"), args, err);
     }
 
     /**

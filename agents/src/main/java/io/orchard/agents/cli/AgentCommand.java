@@ -2,6 +2,7 @@ package io.orchard.agents.cli;
 
 import io.orchard.agents.AgentController;
 import io.orchard.agents.zoo.Species;
+import io.orchard.cli.CommandLineErrors;
 import io.orchard.protocol.message.GameOverMessage;
 import java.io.IOException;
 import java.io.InputStream;
@@ -69,7 +70,7 @@ final class AgentCommand implements Callable<Integer> {
             return 0;
         } catch (IOException | IllegalArgumentException e) {
             err.println("orchard agent: " + e.getMessage());
-            return CommandLines.FAILED;
+            return CommandLineErrors.FAILED;
         }
     }
 }

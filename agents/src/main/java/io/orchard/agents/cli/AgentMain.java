@@ -2,6 +2,7 @@ package io.orchard.agents.cli;
 
 import io.orchard.agents.AgentController;
 import io.orchard.agents.AgentStats;
+import io.orchard.cli.CommandLineErrors;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.Score;
 import java.io.BufferedReader;
@@ -59,7 +60,7 @@ public final class AgentMain {
      *         wrong command line (printed on {@code err}, naming the option and the value)
      */
     public static int agent(List<String> args, InputStream console, PrintStream out, PrintStream err) {
-        return CommandLines.execute(agentCommand(console, out, err).setCommandName("orchard agent"), args, err);
+        return CommandLineErrors.execute(agentCommand(console, out, err).setCommandName("orchard agent"), args, err);
     }
 
     /**
@@ -68,7 +69,7 @@ public final class AgentMain {
      * @return the exit status, as {@link #agent} returns it
      */
     public static int agents(List<String> args, InputStream console, PrintStream out, PrintStream err) {
-        return CommandLines.execute(agentsCommand(console, out, err).setCommandName("orchard agents"), args, err);
+        return CommandLineErrors.execute(agentsCommand(console, out, err).setCommandName("orchard agents"), args, err);
     }
 
     /**

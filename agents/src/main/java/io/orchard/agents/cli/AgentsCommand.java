@@ -2,6 +2,7 @@ package io.orchard.agents.cli;
 
 import io.orchard.agents.AgentController;
 import io.orchard.agents.zoo.Species;
+import io.orchard.cli.CommandLineErrors;
 import io.orchard.protocol.message.GameOverMessage;
 import java.io.InputStream;
 import java.io.PrintStream;
@@ -74,7 +75,7 @@ final class AgentsCommand implements Callable<Integer> {
                 } catch (ExecutionException e) {
                     AgentController agent = new ArrayList<>(byName.values()).get(i);
                     err.println("orchard agents: " + agent.name() + ": " + e.getCause().getMessage());
-                    status = CommandLines.FAILED;
+                    status = CommandLineErrors.FAILED;
                 }
             }
             AgentMain.report(over, List.copyOf(byName.values()), out);

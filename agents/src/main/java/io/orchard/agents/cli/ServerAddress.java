@@ -1,5 +1,6 @@
 package io.orchard.agents.cli;
 
+import io.orchard.cli.Port;
 import picocli.CommandLine.Option;
 
 /** The options that say which server to play on, shared by {@code agent} and {@code agents}. */
@@ -9,7 +10,7 @@ final class ServerAddress {
             description = "The server's host (default: ${DEFAULT-VALUE})")
     String host;
 
-    @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = CommandLines.Port.class,
+    @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = Port.class,
             description = "The server's port (default: ${DEFAULT-VALUE})")
     int port;
 

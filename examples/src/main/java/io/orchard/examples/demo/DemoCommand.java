@@ -1,5 +1,7 @@
 package io.orchard.examples.demo;
 
+import io.orchard.cli.Decimal;
+import io.orchard.cli.Seed;
 import io.orchard.examples.OptionValues;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
@@ -31,7 +33,7 @@ public final class DemoCommand implements Callable<Integer> {
     /** Simulated seconds between the headless viewer's screenshots. */
     static final double EVERY = 10;
 
-    @Option(names = "--seed", paramLabel = "N", converter = OptionValues.Seed.class,
+    @Option(names = "--seed", paramLabel = "N", converter = Seed.class,
             description = "Seed of the world; drawn and printed when absent")
     private Long seed;
 
@@ -92,7 +94,7 @@ public final class DemoCommand implements Callable<Integer> {
     }
 
     /** A game of 1 s to a day. */
-    static final class TimeLimit extends OptionValues.Decimal {
+    static final class TimeLimit extends Decimal {
         TimeLimit() {
             super(1, 86_400, "1-86400 seconds");
         }

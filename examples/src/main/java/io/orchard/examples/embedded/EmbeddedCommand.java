@@ -1,5 +1,7 @@
 package io.orchard.examples.embedded;
 
+import io.orchard.cli.Decimal;
+import io.orchard.cli.Seed;
 import io.orchard.examples.OptionValues;
 import java.io.PrintStream;
 import java.util.concurrent.Callable;
@@ -15,7 +17,7 @@ import picocli.CommandLine.Option;
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n")
 public final class EmbeddedCommand implements Callable<Integer> {
 
-    @Option(names = "--seed", paramLabel = "N", defaultValue = "1998", converter = OptionValues.Seed.class,
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "1998", converter = Seed.class,
             description = "Seed of the world (default: ${DEFAULT-VALUE})")
     private long seed;
 
@@ -40,7 +42,7 @@ public final class EmbeddedCommand implements Callable<Integer> {
     }
 
     /** A game of 1 s to an hour. */
-    static final class TimeLimit extends OptionValues.Decimal {
+    static final class TimeLimit extends Decimal {
         TimeLimit() {
             super(1, 3600, "1-3600 seconds");
         }

@@ -1,5 +1,6 @@
 package io.orchard.examples.firstagent;
 
+import io.orchard.cli.Port;
 import io.orchard.examples.OptionValues;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Ranking;
@@ -27,7 +28,7 @@ public final class FirstAgentCommand implements Callable<Integer> {
             description = "The server's host (default: ${DEFAULT-VALUE})")
     private String host;
 
-    @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = OptionValues.Port.class,
+    @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = Port.class,
             description = "The server's port (default: ${DEFAULT-VALUE})")
     private int port;
 

@@ -1,5 +1,8 @@
 package io.orchard.examples.tournament;
 
+import io.orchard.cli.Decimal;
+import io.orchard.cli.Seed;
+import io.orchard.cli.Whole;
 import io.orchard.examples.OptionValues;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
@@ -42,7 +45,7 @@ public final class TournamentCommand implements Callable<Integer> {
                     + "Roadrunner, FirstAgent (default: ${DEFAULT-VALUE})")
     private Lineup lineup;
 
-    @Option(names = "--seed-from", paramLabel = "N", defaultValue = "1", converter = OptionValues.Seed.class,
+    @Option(names = "--seed-from", paramLabel = "N", defaultValue = "1", converter = Seed.class,
             description = "The seed of the first game (default: ${DEFAULT-VALUE})")
     private long seedFrom;
 
@@ -101,14 +104,14 @@ public final class TournamentCommand implements Callable<Integer> {
     }
 
     /** 1 to 1000 games. */
-    static final class Games extends OptionValues.Whole {
+    static final class Games extends Whole {
         Games() {
             super(1, 1000, "1-1000 games");
         }
     }
 
     /** A game of 1 s to an hour. */
-    static final class TimeLimit extends OptionValues.Decimal {
+    static final class TimeLimit extends Decimal {
         TimeLimit() {
             super(1, 3600, "1-3600 seconds");
         }
