@@ -11,4 +11,4 @@ dependencyResolutionManagement {
     }
 }
 
-include("protocol", "server", "agents", "viewer", "examples")
+include("protocol", "cli", "server", "agents", "viewer", "bom", "examples")

@@ -10,6 +10,7 @@ description = "Runnable programs: the orchard launcher, the demo, embedding, a f
 
 dependencies {
     implementation(project(":protocol"))
+    implementation(project(":cli"))
     implementation(project(":server"))
     implementation(project(":agents"))
     implementation(project(":viewer"))
@@ -17,10 +18,11 @@ dependencies {
     implementation(libs.logback.classic)
     implementation(libs.jsonschema.generator)
     implementation(libs.xchart)
+    implementation(libs.picocli)
 
-    testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
+    testImplementation(libs.archunit.junit5)
     testRuntimeOnly(libs.junit.platform.launcher)
 }
 
@@ -31,6 +33,9 @@ application {
 }
 
 tasks.named<JavaExec>("run") {
+    // In the directory gradle was started from, as ./orchard runs, so that relative paths in the
+    // arguments (--out, --resume, --replay) mean what they say, not a path inside examples/.
+    workingDir = gradle.startParameter.currentDir
     // The launcher's subcommands read commands from the console.
     standardInput = System.`in`
 }

@@ -1,8 +1,10 @@
 plugins {
     `java-library`
+    `maven-publish`
 }
 
 apply(from = rootProject.file("gradle/java-conventions.gradle.kts"))
+apply(from = rootProject.file("gradle/publish-conventions.gradle.kts"))
 
 group = "io.orchard"
 version = "0.1.0-SNAPSHOT"
@@ -12,7 +14,6 @@ dependencies {
     // The messages are Jackson-serialisable records and the codec hands out Jackson types.
     api(libs.jackson.databind)
 
-    testImplementation(platform(libs.junit.bom))
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)

@@ -41,6 +41,20 @@ class Connection:
         return json.loads(line) if line else None
 
 
+def connect(host, port):
+    """The connection, or an exit with one line saying why there is none (no traceback)."""
+    where = f"{host}:{port}"
+    try:
+        return Connection(host, port)
+    except ConnectionRefusedError:
+        sys.exit(f"orchard_agent.py: no server is listening at {where}; start one first,"
+                 " for example with ./orchard server")
+    except socket.gaierror:
+        sys.exit(f"orchard_agent.py: unknown host '{host}'")
+    except OSError as e:
+        sys.exit(f"orchard_agent.py: cannot connect to {where}: {e.strerror or e}")
+
+
 def heading_towards(dx, dz):
     """The heading that faces along (dx, dz): 0 faces north (-z), positive turns left."""
     return math.atan2(-dx, -dz)
@@ -127,9 +141,11 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
 
-    c = Connection(args.host, args.port)
+    c = connect(args.host, args.port)
     c.send({"type": "Hello", "protocolVersion": 2, "role": "agent", "client": "orchard_agent.py"})
     welcome = c.receive()
+    if welcome is None:
+        sys.exit(f"orchard_agent.py: {args.host}:{args.port} closed the connection before its welcome")
     if welcome["type"] != "Welcome":
         sys.exit("refused: " + welcome.get("text", str(welcome)))
     lockstep = welcome["clock"] == "lockstep"

@@ -12,7 +12,12 @@ public final class ModelCheckException extends IllegalArgumentException {
 
     private final transient List<String> problems;
 
-    /** @param source the model's name, @param problems each problem in words */
+    /**
+     * The model {@code source} cannot be registered, for the {@code problems} found in it.
+     *
+     * @param source   the model's name
+     * @param problems each problem in words
+     */
     public ModelCheckException(String source, List<String> problems) {
         super("model " + source + " cannot be registered: " + String.join("; ", problems));
         this.problems = List.copyOf(problems);

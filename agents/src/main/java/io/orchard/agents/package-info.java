@@ -64,5 +64,13 @@
  *
  * <p>The paper's five agents are in {@link io.orchard.agents.zoo}; {@code ./orchard agent} runs
  * one of them ({@link io.orchard.agents.cli.AgentMain}).
+ *
+ * <p>Inside, the controller is assembled from package-private parts with one job each: the
+ * connection ({@code Session}, kept under the server's rate by a {@code Throttle}), registering
+ * ({@code Registration}), the clock and the agent's turns in it ({@code Turns}, with a
+ * {@code PerceptionSchedule}), what the agent is and knows ({@code Situation}), its actions
+ * ({@code ControllerMotor}, which follows its moves and grasps and plays the walk animation), its
+ * default behaviours ({@code Behaviours}), its counts ({@code Tally}), and the loop that takes the
+ * server's messages one at a time and calls the hooks ({@code GameLoop}).
  */
 package io.orchard.agents;

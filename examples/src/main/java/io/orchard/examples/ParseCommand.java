@@ -3,11 +3,17 @@ package io.orchard.examples;
 import io.orchard.agents.language.GoalJson;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
-import io.orchard.protocol.cli.UsageException;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code ./orchard parse [--agents NAMES] [--notation] SENTENCE...}: shows what an agent makes of an
@@ -15,70 +21,50 @@ import java.util.List;
  * the agent's one-line restatement, or the agent's answer when it does not understand. Either way
  * the exit status is 0; only a command line without a sentence is a usage error.
  */
-public final class ParseCommand implements Command {
+@Command(name = "parse", abbreviateSynopsis = true, sortOptions = false,
+        description = {"Show how an agent understands an instruction in English", "",
+            "It prints what an agent makes of an instruction in English: the goal as JSON and the agent's one-line "
+                    + "restatement, or, when it does not understand, its answer, which names the words it does not "
+                    + "know. The sentence may be one argument or several words; everything after -- is taken as the "
+                    + "sentence. The grammar, the vocabulary and the forms of goals are described in "
+                    + "docs/instructions.md."},
+        descriptionHeading = "%n", parameterListHeading = "%nArguments:%n", optionListHeading = "%nOptions:%n",
+        footerHeading = "%nExample:%n", footer = "  ./orchard parse \"get the nearest banana on a table\"")
+public final class ParseCommand implements Callable<Integer> {
 
-    private static final String AGENTS = "--agents";
-    private static final String NOTATION = "--notation";
+    @Parameters(paramLabel = "SENTENCE", arity = "0..*", description = "The instruction, in one or more words")
+    private List<String> words = new ArrayList<>();
 
-    @Override
-    public String name() {
-        return "parse";
+    @Option(names = "--agents", paramLabel = "NAMES",
+            description = "Other agents' names to know, separated by commas; Dwarf, Robot, Bunny, Guppy and Roadrunner "
+                    + "are always known")
+    private List<String> agentLists = new ArrayList<>();
+
+    @Option(names = "--notation", description = "Print the goal in the compact notation instead of JSON")
+    private boolean notation;
+
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
+    private boolean help;
+
+    @Spec
+    private CommandSpec spec;
+
+    private final PrintStream out;
+
+    /** The {@code ./orchard parse} command, printing to {@code out}. */
+    public ParseCommand(PrintStream out) {
+        this.out = out;
     }
 
     @Override
-    public String summary() {
-        return "Show how an agent understands an instruction in English";
-    }
-
-    @Override
-    public String help() {
-        return """
-                Usage: ./orchard parse [--agents NAMES] [--notation] SENTENCE...
-
-                Shows what an agent makes of an instruction in English: the goal as JSON and the
-                agent's one-line restatement, or, when it does not understand, its answer, which
-                names the words it does not know. The sentence may be one argument or several
-                words; everything after -- is taken as the sentence. The grammar, the vocabulary
-                and the forms of goals are described in docs/instructions.md.
-
-                Options:
-                  --agents NAMES  Other agents' names to know, separated by commas; Dwarf, Robot,
-                                  Bunny, Guppy and Roadrunner are always known
-                  --notation      Print the goal in the compact notation instead of JSON
-                  --help          Show this help
-
-                Example:
-                  ./orchard parse "get the nearest banana on a table"
-                """;
-    }
-
-    @Override
-    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException {
+    public Integer call() {
         List<String> agents = new ArrayList<>();
-        List<String> words = new ArrayList<>();
-        boolean notation = false;
-        boolean sentenceOnly = false;
-        for (int i = 0; i < args.size(); i++) {
-            String arg = args.get(i);
-            if (sentenceOnly || !arg.startsWith("--")) {
-                words.add(arg);
-            } else if (arg.equals("--")) {
-                sentenceOnly = true;
-            } else if (arg.equals(NOTATION)) {
-                notation = true;
-            } else if (arg.equals(AGENTS) && i + 1 < args.size()) {
-                agents.addAll(names(args.get(++i)));
-            } else if (arg.startsWith(AGENTS + "=")) {
-                agents.addAll(names(arg.substring(AGENTS.length() + 1)));
-            } else if (arg.equals(AGENTS)) {
-                throw new UsageException(AGENTS + " needs names after it, for example " + AGENTS + " Alice,Bob");
-            } else {
-                throw new UsageException("unexpected option '" + arg + "'; expected " + AGENTS + " NAMES, "
-                        + NOTATION + ", --help or a sentence");
-            }
+        for (String list : agentLists) {
+            agents.addAll(names(list));
         }
         if (words.isEmpty()) {
-            throw new UsageException("expected a sentence, for example: ./orchard parse \"go to the castle\"");
+            throw new ParameterException(spec.commandLine(),
+                    "expected a sentence, for example: ./orchard parse \"go to the castle\"");
         }
         Interpretation interpretation = new InstructionInterpreter(agents).interpret(String.join(" ", words));
         interpretation.addressee().ifPresent(name -> out.println("Addressed to " + name + "."));
@@ -92,11 +78,12 @@ public final class ParseCommand implements Command {
         return 0;
     }
 
-    private static List<String> names(String list) throws UsageException {
+    private List<String> names(String list) {
         List<String> names = Arrays.stream(list.split(",")).map(String::strip).filter(name -> !name.isEmpty())
                 .toList();
         if (names.isEmpty()) {
-            throw new UsageException(AGENTS + " needs names separated by commas, was '" + list + "'");
+            throw new ParameterException(spec.commandLine(), "invalid value for option '--agents': '" + list
+                    + "' names no agent (expected names separated by commas, such as Alice,Bob)");
         }
         return names;
     }

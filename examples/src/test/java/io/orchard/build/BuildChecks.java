@@ -2,13 +2,17 @@ package io.orchard.build;
 
 import static java.util.Map.entry;
 
+import io.orchard.build.ModuleBuild.Kind;
 import io.orchard.build.ModuleBuild.Usage;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.function.Function;
 
@@ -27,6 +31,7 @@ final class BuildChecks {
             entry("netty", "netty.version"),
             entry("jts", "jts.version"),
             entry("jme", "jme.version"),
+            entry("lwjgl", "lwjgl.version"),
             entry("slf4j", "slf4j.version"),
             entry("logback", "logback.version"),
             entry("junit", "junit.version"),
@@ -34,11 +39,19 @@ final class BuildChecks {
             entry("jsonschema-generator", "jsonschema-generator.version"),
             entry("jmh", "jmh.version"),
             entry("jazzer", "jazzer.version"),
-            entry("xchart", "xchart.version"));
+            entry("xchart", "xchart.version"),
+            entry("picocli", "picocli.version"),
+            entry("archunit", "archunit.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";
     private static final String PRESENT = "present";
+    private static final String MAIN_CLASS = "main class";
+    private static final String RUN_WORKING_DIRECTORY = "run working directory";
+    private static final String RUN_ONLY_LIBRARIES = "run-only libraries";
+    private static final Set<String> GRADLE_RUN_SETTINGS = Set.of(RUN_WORKING_DIRECTORY, RUN_ONLY_LIBRARIES);
+    private static final String SLF4J_API = "org.slf4j:slf4j-api";
+    private static final String SLF4J_PROVIDER = "ch.qos.logback:logback-classic";
 
     private BuildChecks() {
     }
@@ -107,17 +120,20 @@ final class BuildChecks {
         return drifts;
     }
 
-    /** Each module must depend on the same other modules, for main code or tests, in both builds. */
+    /** Each module must depend on the same other modules, in the same Maven scope, in both builds. */
     static List<Drift> moduleDependencies(MavenBuild maven, GradleBuild gradle) {
         return dependencies(maven, gradle, ModuleBuild::modules, "on module ");
     }
 
-    /** Each module must depend on the same libraries ({@code group:artifact}), for main code or tests, in both. */
+    /**
+     * Each module must depend on the same libraries ({@code group:artifact}) in both, in the same
+     * Maven scope: Gradle's api and implementation are compile, runtimeOnly is runtime.
+     */
     static List<Drift> libraryDependencies(MavenBuild maven, GradleBuild gradle) {
         return dependencies(maven, gradle, ModuleBuild::libraries, "on library ");
     }
 
-    /** Each module must have the same group and version in both builds. */
+    /** Each module must have the same group, artifact and version in both builds. */
     static List<Drift> coordinates(MavenBuild maven, GradleBuild gradle) {
         List<Drift> drifts = new ArrayList<>();
         for (String module : sharedModules(maven, gradle)) {
@@ -126,8 +142,97 @@ final class BuildChecks {
             if (!Objects.equals(pom.group(), script.group())) {
                 drifts.add(new Drift(module + " group", orAbsent(pom.group()), orAbsent(script.group())));
             }
+            if (!Objects.equals(pom.artifact(), script.artifact())) {
+                drifts.add(new Drift(module + " artifact", orAbsent(pom.artifact()), orAbsent(script.artifact())));
+            }
             if (!Objects.equals(pom.version(), script.version())) {
                 drifts.add(new Drift(module + " version", orAbsent(pom.version()), orAbsent(script.version())));
+            }
+        }
+        return drifts;
+    }
+
+    /** Each module must build the same kind of thing (library, BOM, programs) in both builds. */
+    static List<Drift> kinds(MavenBuild maven, GradleBuild gradle) {
+        List<Drift> drifts = new ArrayList<>();
+        for (String module : sharedModules(maven, gradle)) {
+            Kind inMaven = maven.builds().get(module).kind();
+            Kind inGradle = gradle.builds().get(module).kind();
+            if (inMaven != inGradle) {
+                drifts.add(new Drift(module + " kind", inMaven.toString(), inGradle.toString()));
+            }
+        }
+        return drifts;
+    }
+
+    /**
+     * What the root pom sets for every module (BOM imports, compiler, test JVM, Javadoc) must be
+     * what the convention scripts under gradle/ set.
+     */
+    static List<Drift> settings(MavenBuild maven, GradleBuild gradle) {
+        return compare("", maven.settings(), gradle.settings(), key -> false);
+    }
+
+    /**
+     * What each module's build sets beyond its dependencies (POM metadata, Automatic-Module-Name,
+     * sources and Javadoc jars, the BOM's modules, the main class) must be the same in both builds.
+     * Only Gradle has run tasks for the server and the viewer: their settings are {@link #runTasks}'.
+     */
+    static List<Drift> moduleSettings(MavenBuild maven, GradleBuild gradle) {
+        List<Drift> drifts = new ArrayList<>();
+        for (String module : sharedModules(maven, gradle)) {
+            Map<String, String> inMaven = maven.builds().get(module).settings();
+            drifts.addAll(compare(module + " ", inMaven, gradle.builds().get(module).settings(),
+                    key -> GRADLE_RUN_SETTINGS.contains(key) || key.equals(MAIN_CLASS) && !inMaven.containsKey(key)));
+        }
+        return drifts;
+    }
+
+    /**
+     * Each Gradle run task must run an existing main class of its module, in the directory gradle was
+     * started from (as ./orchard and the Maven run profile do, not in the module's folder), with an
+     * SLF4J provider on its class path when the module logs through SLF4J. Reported against what
+     * is expected, in the place of Maven's side.
+     */
+    static List<Drift> runTasks(GradleBuild gradle, Path root) {
+        List<Drift> drifts = new ArrayList<>();
+        for (ModuleBuild build : new TreeMap<>(gradle.builds()).values()) {
+            Map<String, String> settings = build.settings();
+            if (!settings.containsKey(RUN_WORKING_DIRECTORY)) {
+                continue;
+            }
+            String main = settings.get(MAIN_CLASS);
+            Path source = main == null ? null : root.resolve(build.name()).resolve("src/main/java")
+                    .resolve(main.replace('.', '/') + ".java");
+            if (source == null || !Files.isRegularFile(source)) {
+                drifts.add(new Drift(build.name() + " run main class", "a class of src/main/java", orAbsent(main)));
+            }
+            if (!GradleBuild.CALLERS_DIRECTORY.equals(settings.get(RUN_WORKING_DIRECTORY))) {
+                drifts.add(new Drift(build.name() + " run working directory", GradleBuild.CALLERS_DIRECTORY,
+                        settings.get(RUN_WORKING_DIRECTORY)));
+            }
+            boolean logs = build.libraries().get(SLF4J_API) == Usage.COMPILE;
+            Usage provider = build.libraries().get(SLF4J_PROVIDER);
+            boolean provided = provider == Usage.COMPILE || provider == Usage.RUNTIME
+                    || settings.getOrDefault(RUN_ONLY_LIBRARIES, "").contains(SLF4J_PROVIDER);
+            if (logs && !provided) {
+                drifts.add(new Drift(build.name() + " run SLF4J provider", SLF4J_PROVIDER, Drift.ABSENT));
+            }
+        }
+        return drifts;
+    }
+
+    private static List<Drift> compare(String prefix, Map<String, String> inMaven, Map<String, String> inGradle,
+            java.util.function.Predicate<String> gradleOnly) {
+        List<Drift> drifts = new ArrayList<>();
+        for (String key : union(inMaven.keySet(), inGradle.keySet())) {
+            if (gradleOnly.test(key)) {
+                continue;
+            }
+            String mavenValue = inMaven.get(key);
+            String gradleValue = inGradle.get(key);
+            if (!Objects.equals(mavenValue, gradleValue)) {
+                drifts.add(new Drift(prefix + key, orAbsent(mavenValue), orAbsent(gradleValue)));
             }
         }
         return drifts;

@@ -17,10 +17,12 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * The Gradle build (settings.gradle.kts, gradle/libs.versions.toml, each module's build.gradle.kts)
- * must say what the Maven build (the poms) says. The tests on the repository's own files fail when
- * the two drift apart; the nested tests drift a copy of those files on purpose and show that each
- * check then reports the drift.
+ * The Gradle build (settings.gradle.kts, gradle/libs.versions.toml, the convention scripts under
+ * gradle/, each module's build.gradle.kts) must say what the Maven build (the poms) says: modules,
+ * versions, dependencies and their scopes, kinds of module, BOM imports, compiler, test JVM,
+ * Javadoc and publication settings, main classes and run tasks. The tests on the repository's own
+ * files fail when the two drift apart; the nested tests drift a copy of those files on purpose
+ * and show that each check then reports the drift.
  */
 class BuildDriftTest {
 
@@ -87,8 +89,57 @@ class BuildDriftTest {
     @Test
     void groupAndVersionOfEachBuildScriptEqualThePom() {
         assertThat(BuildChecks.coordinates(maven, gradle))
-                .as("group and version of each build.gradle.kts against groupId and version of its pom.xml")
+                .as("group, artifact and version of each build.gradle.kts against those of its pom.xml")
                 .isEmpty();
+    }
+
+    @Test
+    void eachModuleBuildsTheSameKindOfThingInBothBuilds() {
+        assertThat(maven.builds().values()).extracting(ModuleBuild::kind)
+                .contains(ModuleBuild.Kind.LIBRARY, ModuleBuild.Kind.PLATFORM, ModuleBuild.Kind.PROGRAM);
+        assertThat(BuildChecks.kinds(maven, gradle))
+                .as("plugins of each build.gradle.kts against packaging and deployment of its pom.xml")
+                .isEmpty();
+    }
+
+    @Test
+    void conventionScriptsSetWhatTheRootPomSets() {
+        assertThat(maven.settings()).containsKeys("BOM imports", "compiler release", "compiler arguments",
+                "test JVM arguments", "Javadoc doclint");
+        assertThat(BuildChecks.settings(maven, gradle))
+                .as("gradle/*-conventions.gradle.kts against the root pom.xml")
+                .isEmpty();
+    }
+
+    @Test
+    void eachModuleSetsWhatItsPomSets() {
+        assertThat(maven.builds().get("protocol").settings()).containsKeys("Automatic-Module-Name", "sources jar",
+                "Javadoc jar", "pom licence", "pom scm");
+        assertThat(BuildChecks.moduleSettings(maven, gradle))
+                .as("publication, jars and main class of each build.gradle.kts against its pom.xml")
+                .isEmpty();
+    }
+
+    @Test
+    void runTasksRunAMainClassInTheCallersDirectoryWithAnSlf4jProvider() {
+        assertThat(gradle.builds().values()).filteredOn(build -> build.settings().containsKey("main class"))
+                .extracting(ModuleBuild::name)
+                .contains("examples", "server", "viewer");
+        assertThat(BuildChecks.runTasks(gradle, root))
+                .as("the run task of each build.gradle.kts with the application plugin")
+                .isEmpty();
+    }
+
+    @Test
+    void bomManagesEveryPublishedLibraryAndNothingElse() {
+        List<String> libraries = maven.builds().values().stream()
+                .filter(build -> build.kind() == ModuleBuild.Kind.LIBRARY)
+                .map(ModuleBuild::name)
+                .sorted()
+                .toList();
+        assertThat(maven.builds().get("bom").settings().get("managed modules"))
+                .as("the modules bom/pom.xml manages: every published library of the root pom's <modules>")
+                .isEqualTo(String.join(", ", libraries));
     }
 
     @Test
@@ -113,8 +164,8 @@ class BuildDriftTest {
 
         @BeforeEach
         void copyBuildFiles() throws IOException {
-            List<String> files = new ArrayList<>(
-                    List.of("pom.xml", "settings.gradle.kts", "gradle/libs.versions.toml"));
+            List<String> files = new ArrayList<>(List.of("pom.xml", "settings.gradle.kts", "gradle/libs.versions.toml",
+                    GradleBuild.JAVA_CONVENTIONS, GradleBuild.PUBLISH_CONVENTIONS));
             for (String module : maven.modules()) {
                 files.add(module + "/pom.xml");
                 files.add(module + "/build.gradle.kts");
@@ -181,7 +232,7 @@ class BuildDriftTest {
 
             assertThat(driftsAfterEdit(check, "agents/build.gradle.kts", "testImplementation(project(\":server\"))",
                     "implementation(project(\":server\"))"))
-                    .containsExactly(new Drift("agents dependency on module server", "test", "main"));
+                    .containsExactly(new Drift("agents dependency on module server", "test", "compile"));
         }
 
         @Test
@@ -190,7 +241,90 @@ class BuildDriftTest {
 
             assertThat(driftsAfterEdit(check, "server/build.gradle.kts", "implementation(libs.jts.core)", ""))
                     .containsExactly(new Drift("server dependency on library org.locationtech.jts:jts-core",
-                            "main", "absent"));
+                            "compile", "absent"));
+        }
+
+        @Test
+        void libraryDependencyCheckReportsARuntimeOnlyDependencyThatIsCompileScopeInMaven() throws IOException {
+            Check check = dir -> BuildChecks.libraryDependencies(MavenBuild.read(dir), GradleBuild.read(dir));
+
+            assertThat(driftsAfterEdit(check, "server/build.gradle.kts", "implementation(libs.jts.core)",
+                    "runtimeOnly(libs.jts.core)"))
+                    .containsExactly(new Drift("server dependency on library org.locationtech.jts:jts-core",
+                            "compile", "runtime"));
+        }
+
+        @Test
+        void kindCheckReportsALibraryThatGradleDoesNotPublish() throws IOException {
+            Check check = dir -> BuildChecks.kinds(MavenBuild.read(dir), GradleBuild.read(dir));
+
+            assertThat(driftsAfterEdit(check, "agents/build.gradle.kts", "    `maven-publish`\n", ""))
+                    .containsExactly(new Drift("agents kind", "library", "program"));
+        }
+
+        @Test
+        void settingsCheckReportsABomImportMissingFromTheConventions() throws IOException {
+            Check check = dir -> BuildChecks.settings(MavenBuild.read(dir), GradleBuild.read(dir));
+            String imports = maven.settings().get("BOM imports");
+
+            assertThat(driftsAfterEdit(check, GradleBuild.JAVA_CONVENTIONS, "\"netty-bom\", ", ""))
+                    .containsExactly(new Drift("BOM imports", imports,
+                            imports.replace("io.netty:netty-bom, ", "")));
+        }
+
+        @Test
+        void settingsCheckReportsATestHeapThatDiffers() throws IOException {
+            Check check = dir -> BuildChecks.settings(MavenBuild.read(dir), GradleBuild.read(dir));
+            String heap = maven.settings().get("test JVM arguments");
+
+            assertThat(driftsAfterEdit(check, GradleBuild.JAVA_CONVENTIONS, "maxHeapSize = \"",
+                    "maxHeapSize = \"1"))
+                    .containsExactly(new Drift("test JVM arguments", heap, heap.replace("-Xmx", "-Xmx1")));
+        }
+
+        @Test
+        void moduleSettingsCheckReportsALicenceThatDiffers() throws IOException {
+            Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
+
+            List<Drift> drifts = driftsAfterEdit(check, GradleBuild.PUBLISH_CONVENTIONS,
+                    "name.set(\"Apache-2.0\")", "name.set(\"MIT\")");
+
+            assertThat(drifts).extracting(Drift::item)
+                    .containsExactlyInAnyOrder("agents pom licence", "bom pom licence", "cli pom licence",
+                            "protocol pom licence", "server pom licence", "viewer pom licence");
+            assertThat(drifts).extracting(Drift::gradle).allMatch(licence -> licence.startsWith("MIT "));
+        }
+
+        @Test
+        void moduleSettingsCheckReportsAModuleTheBomLeavesOut() throws IOException {
+            Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
+
+            assertThat(driftsAfterEdit(check, "bom/build.gradle.kts", "        api(project(\":viewer\"))\n", ""))
+                    .containsExactly(new Drift("bom managed modules", "agents, cli, protocol, server, viewer",
+                            "agents, cli, protocol, server"));
+        }
+
+        @Test
+        void runTaskCheckReportsARunInTheModulesFolderWithoutLogging() throws IOException {
+            Check check = dir -> BuildChecks.runTasks(GradleBuild.read(dir), root);
+
+            edit("viewer/build.gradle.kts", "    classpath += runLogging\n", "");
+            assertThat(driftsAfterEdit(check, "viewer/build.gradle.kts",
+                    "    workingDir = " + GradleBuild.CALLERS_DIRECTORY + "\n", ""))
+                    .containsExactly(new Drift("viewer run working directory", GradleBuild.CALLERS_DIRECTORY,
+                            "the module's directory"));
+            assertThat(check.on(copy)).contains(new Drift("viewer run SLF4J provider",
+                    "ch.qos.logback:logback-classic", "absent"));
+        }
+
+        @Test
+        void runTaskCheckReportsAMainClassThatDoesNotExist() throws IOException {
+            Check check = dir -> BuildChecks.runTasks(GradleBuild.read(dir), root);
+
+            assertThat(driftsAfterEdit(check, "server/build.gradle.kts", "io.orchard.server.ServerMain",
+                    "io.orchard.server.Gone"))
+                    .containsExactly(new Drift("server run main class", "a class of src/main/java",
+                            "io.orchard.server.Gone"));
         }
 
         @Test
@@ -255,7 +389,7 @@ class BuildDriftTest {
     }
 
     /** The directory holding both pom.xml and settings.gradle.kts: the working directory or one above it. */
-    private static Path repositoryRoot() {
+    static Path repositoryRoot() {
         Path start = Path.of("").toAbsolutePath();
         for (Path dir = start; dir != null; dir = dir.getParent()) {
             if (Files.isRegularFile(dir.resolve("pom.xml"))

@@ -1,6 +1,8 @@
 package io.orchard.build;
 
 import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
@@ -13,6 +15,9 @@ import java.util.regex.Pattern;
  * Gradle's cache ({@code .../org.slf4j/slf4j-api/2.0.20/<sha1>/slf4j-api-2.0.20.jar}).
  */
 final class ResolvedClasspath {
+
+    private static final Pattern GRADLE_CACHE = Pattern.compile(
+            "/files-2\\.1/(?<group>[^/]+)/(?<artifact>[^/]+)/(?<version>[^/]+)/[0-9a-f]+/[^/]+\\.jar$");
 
     private final List<String> entries;
 
@@ -30,6 +35,40 @@ final class ResolvedClasspath {
         return new ResolvedClasspath(Arrays.stream(classpath.split(Pattern.quote(File.pathSeparator)))
                 .map(entry -> entry.replace('\\', '/'))
                 .toList());
+    }
+
+    /** A library's jar on the classpath. */
+    record Jar(String group, String artifact, String version) {
+
+        @Override
+        public String toString() {
+            return group + ":" + artifact + ":" + version;
+        }
+    }
+
+    /**
+     * The libraries' jars on the classpath: those in Gradle's cache, and those in the Maven
+     * repository {@code localRepository} if it is given (the group of a jar there is its folder's
+     * path). Anything else, such as a module's own classes, is left out.
+     */
+    List<Jar> jars(Optional<Path> localRepository) {
+        List<Jar> jars = new ArrayList<>();
+        String repository = localRepository.map(path -> path.toAbsolutePath().normalize().toString()
+                .replace('\\', '/') + "/").orElse(null);
+        for (String entry : entries) {
+            Matcher cached = GRADLE_CACHE.matcher(entry);
+            if (cached.find()) {
+                jars.add(new Jar(cached.group("group"), cached.group("artifact"), cached.group("version")));
+            } else if (repository != null && entry.startsWith(repository) && entry.endsWith(".jar")) {
+                String[] folders = entry.substring(repository.length()).split("/");
+                if (folders.length >= 4) {
+                    int n = folders.length;
+                    jars.add(new Jar(String.join(".", Arrays.asList(folders).subList(0, n - 3)), folders[n - 3],
+                            folders[n - 2]));
+                }
+            }
+        }
+        return jars;
     }
 
     /** The version of {@code group:artifact} whose jar is on the classpath, if it is there. */

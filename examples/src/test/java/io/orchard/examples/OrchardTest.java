@@ -12,11 +12,15 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Parameters;
 
 class OrchardTest {
 
@@ -27,8 +31,8 @@ class OrchardTest {
         return Orchard.run(args, print(out), print(err));
     }
 
-    private int run(Orchard launcher, String... args) {
-        return launcher.run(List.of(args), print(out), print(err));
+    private int run(List<CommandLine> commands, String... args) {
+        return Orchard.launcher(commands, print(out), print(err)).execute(args);
     }
 
     private String out() {
@@ -48,8 +52,10 @@ class OrchardTest {
     void helpListsTheCommandsWithTheirSummaries(String option) {
         assertThat(run(option)).isZero();
         assertThat(out())
-                .contains("Usage: ./orchard <command> [options]")
+                .startsWith("Usage: orchard <command> [OPTIONS]")
                 .containsPattern("\n  protocol-schema +Print the JSON Schema of every protocol message\n")
+                .containsPattern("\n  help +" + Orchard.HELP_SUMMARY + "\n")
+                .containsPattern("\n  completion +Print a bash completion script")
                 .contains("--version");
         assertThat(err()).isEmpty();
     }
@@ -57,7 +63,7 @@ class OrchardTest {
     @Test
     void noArgumentsShowTheHelp() {
         assertThat(run()).isZero();
-        assertThat(out()).contains("Usage: ./orchard <command> [options]", "protocol-schema");
+        assertThat(out()).contains("Usage: orchard <command> [OPTIONS]", "protocol-schema");
     }
 
     @Test
@@ -78,6 +84,74 @@ class OrchardTest {
     void unknownOptionExitsWith2NamingIt() {
         assertThat(run("--frobnicate")).isEqualTo(2);
         assertThat(err()).contains("unknown option '--frobnicate'");
+    }
+
+    @Test
+    void helpAnswersItsOwnHelp() {
+        assertThat(run("help", "--help")).isZero();
+        assertThat(out()).contains("Usage: orchard help [-h] [COMMAND]", "COMMAND");
+        assertThat(err()).isEmpty();
+    }
+
+    @Test
+    void helpOfAnUnknownCommandExitsWith2NamingIt() {
+        assertThat(run("help", "frobnicate")).isEqualTo(2);
+        assertThat(err()).contains("unknown command 'frobnicate'", "protocol-schema");
+        assertThat(out()).isEmpty();
+    }
+
+    @Test
+    void aBadValueNamesTheCommandTheOptionTheValueAndWhatWasExpected() {
+        assertThat(run("server", "--port", "abc")).isEqualTo(2);
+        assertThat(err()).isEqualTo("""
+                orchard server: invalid value for option '--port': 'abc' is not an integer (expected a port 0-65535)
+                Run ./orchard server --help for its options.
+                """.replace("\n", System.lineSeparator()));
+        assertThat(out()).isEmpty();
+    }
+
+    @Test
+    void completionPrintsABashScriptOfEveryCommandAndItsOptions() {
+        assertThat(run("completion")).isZero();
+        assertThat(out()).startsWith("#!/usr/bin/env bash")
+                .contains("complete -F _complete_orchard")
+                .contains("demo", "server", "viewer", "agents", "first-agent", "tournament", "protocol-schema",
+                        "completion", "help")
+                .contains("--time-limit", "--checkpoint-every", "--screenshot", "--seed-from")
+                .contains("(\"realtime\" \"lockstep\")", "(\"on\" \"off\")",
+                        "(\"dwarf\" \"robot\" \"bunny\" \"guppy\" \"roadrunner\")");
+        assertThat(err()).isEmpty();
+    }
+
+    /** Every command, as named on the command line, and its summary in the launcher's help. */
+    @Nested
+    class EveryCommand {
+
+        private final List<CommandLine> commands = Orchard.commands(System.in, print(out), print(err));
+
+        @Test
+        void answersHelpAsHelpCommandDoesStartingWithItsUsage() {
+            for (CommandLine command : commands) {
+                String name = command.getCommandName();
+                out.reset();
+                assertThat(run(name, "--help")).as(name).isZero();
+                String help = out();
+                out.reset();
+                assertThat(run("help", name)).as(name).isZero();
+
+                assertThat(out()).as(name).isEqualTo(help).startsWith("Usage: orchard " + name + " [OPTIONS]")
+                        .contains("-h, --help");
+            }
+            assertThat(err()).isEmpty();
+        }
+
+        @Test
+        void hasASummaryThatStartsWithACapitalAndEndsWithoutAFullStop() {
+            List<String> summaries = new java.util.ArrayList<>(commands.stream()
+                    .map(command -> command.getCommandSpec().usageMessage().description()[0]).toList());
+            summaries.add(Orchard.HELP_SUMMARY);
+            assertThat(summaries).allSatisfy(summary -> assertThat(summary).matches("[A-Z][^\\n]*[^.]"));
+        }
     }
 
     @Nested
@@ -108,19 +182,20 @@ class OrchardTest {
         @ValueSource(strings = {"protocol-schema --help", "help protocol-schema", "protocol-schema --out x --help"})
         void answersHelp(String line) {
             assertThat(run(line.split(" "))).isZero();
-            assertThat(out()).startsWith("Usage: ./orchard protocol-schema [--out FILE]").contains("--out FILE");
+            assertThat(out()).startsWith("Usage: orchard protocol-schema [OPTIONS]").contains("--out=FILE");
         }
 
         @Test
         void rejectsAnUnknownArgumentWith2() {
             assertThat(run("protocol-schema", "--pretty")).isEqualTo(2);
-            assertThat(err()).contains("unexpected argument '--pretty'", "./orchard protocol-schema --help");
+            assertThat(err()).contains("orchard protocol-schema: unknown option: '--pretty'",
+                    "./orchard protocol-schema --help");
         }
 
         @Test
         void rejectsOutWithoutAFileWith2() {
             assertThat(run("protocol-schema", "--out")).isEqualTo(2);
-            assertThat(err()).contains("--out needs a file name");
+            assertThat(err()).contains("missing required parameter for option '--out' (FILE)");
         }
     }
 
@@ -129,61 +204,51 @@ class OrchardTest {
 
         @Test
         void aFailingCommandExitsWith1AndPrintsItsMessage() {
-            Orchard launcher = new Orchard(List.of(new Stub("explode", new IOException("the disk is full"))));
-            assertThat(run(launcher, "explode")).isEqualTo(1);
+            assertThat(run(List.of(stub("explode", new IOException("the disk is full"))), "explode")).isEqualTo(1);
             assertThat(err()).isEqualTo("orchard explode: the disk is full" + System.lineSeparator());
         }
 
         @Test
         void argumentsAfterTheNameReachTheCommand() {
-            Stub stub = new Stub("echo", null);
-            assertThat(run(new Orchard(List.of(stub)), "echo", "a", "b")).isZero();
-            assertThat(stub.received).containsExactly("a", "b");
+            CommandLine echo = stub("echo", null);
+            assertThat(run(List.of(echo), "echo", "a", "b")).isZero();
+            assertThat(echo.<Stub>getCommand().received).containsExactly("a", "b");
         }
 
         @Test
         void twoCommandsWithOneNameAreRefused() {
-            assertThatThrownBy(() -> new Orchard(List.of(new Stub("twice", null), new Stub("twice", null))))
-                    .isInstanceOf(IllegalArgumentException.class)
+            assertThatThrownBy(() -> Orchard.launcher(List.of(stub("twice", null), stub("twice", null)), print(out),
+                    print(err)))
+                    .isInstanceOf(CommandLine.DuplicateNameException.class)
                     .hasMessageContaining("'twice'");
         }
 
         @Test
         void commandNamesAreUnique() {
-            assertThat(Orchard.COMMANDS).extracting(Command::name).doesNotHaveDuplicates();
+            assertThat(Orchard.commands(System.in, print(out), print(err))).extracting(CommandLine::getCommandName)
+                    .doesNotHaveDuplicates().doesNotContain("help");
         }
     }
 
+    private static CommandLine stub(String name, Exception failure) {
+        return new CommandLine(new Stub(failure)).setCommandName(name);
+    }
+
     /** A command that records its arguments and then fails with the given exception, if any. */
-    private static final class Stub implements Command {
+    @Command(description = "A stand-in")
+    static final class Stub implements Callable<Integer> {
 
-        private final String name;
+        @Parameters
+        private List<String> received = List.of();
+
         private final Exception failure;
-        private List<String> received;
 
-        Stub(String name, Exception failure) {
-            this.name = name;
+        Stub(Exception failure) {
             this.failure = failure;
         }
 
         @Override
-        public String name() {
-            return name;
-        }
-
-        @Override
-        public String summary() {
-            return "A stand-in";
-        }
-
-        @Override
-        public String help() {
-            return "Usage: ./orchard " + name + "\n";
-        }
-
-        @Override
-        public int run(List<String> args, PrintStream out, PrintStream err) throws Exception {
-            received = args;
+        public Integer call() throws Exception {
             if (failure != null) {
                 throw failure;
             }

@@ -1,13 +1,11 @@
 package io.orchard.examples;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import io.orchard.protocol.cli.UsageException;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import java.util.List;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
 class ParseCommandTest {
@@ -15,8 +13,14 @@ class ParseCommandTest {
     private final ByteArrayOutputStream out = new ByteArrayOutputStream();
     private final ByteArrayOutputStream err = new ByteArrayOutputStream();
 
-    private int run(String... args) throws UsageException {
-        return new ParseCommand().run(List.of(args), print(out), print(err));
+    /** Runs {@code ./orchard parse args}. */
+    private int run(String... args) {
+        return Orchard.run(Stream.concat(Stream.of("parse"), Stream.of(args)).toArray(String[]::new), print(out),
+                print(err));
+    }
+
+    private String err() {
+        return err.toString(StandardCharsets.UTF_8);
     }
 
     private String out() {
@@ -28,7 +32,7 @@ class ParseCommandTest {
     }
 
     @Test
-    void printsTheGoalAsJsonAndTheRestatement() throws UsageException {
+    void printsTheGoalAsJsonAndTheRestatement() {
         assertThat(run("get the nearest banana on a table")).isZero();
         assertThat(out()).isEqualTo("""
                 {
@@ -51,42 +55,50 @@ class ParseCommandTest {
     }
 
     @Test
-    void severalWordsAreOneSentence() throws UsageException {
+    void severalWordsAreOneSentence() {
         assertThat(run("--notation", "go", "to", "the", "castle", "and", "then", "pick", "up", "a", "tomato")).isZero();
         assertThat(out()).isEqualTo("go-to(castle); collect(tomato)\nGoing to the castle, then picking up a tomato.\n");
     }
 
     @Test
-    void printsTheAddressee() throws UsageException {
+    void printsTheAddressee() {
         assertThat(run("--notation", "Guppy, stop")).isZero();
         assertThat(out()).isEqualTo("Addressed to Guppy.\nstop\nStopping.\n");
     }
 
     @Test
-    void aSentenceNotUnderstoodGetsTheAnswerAndStatus0() throws UsageException {
+    void aSentenceNotUnderstoodGetsTheAnswerAndStatus0() {
         assertThat(run("jump over the moon")).isZero();
         assertThat(out()).isEqualTo("I didn't understand 'jump over the moon' (I don't know 'jump' or 'moon'); "
                 + "I can go to places, collect fruit, explore, follow, turn, stop.\n");
     }
 
     @Test
-    void knowsTheAgentsItIsTold() throws UsageException {
+    void knowsTheAgentsItIsTold() {
         assertThat(run("--agents", "Alice,Bob", "--notation", "follow alice")).isZero();
         assertThat(out()).startsWith("follow(Alice)\n");
     }
 
     @Test
-    void everythingAfterTwoDashesIsTheSentence() throws UsageException {
+    void everythingAfterTwoDashesIsTheSentence() {
         assertThat(run("--", "--notation")).isZero();
         assertThat(out()).startsWith("I didn't understand");
     }
 
     @Test
     void noSentenceIsAUsageError() {
-        assertThatThrownBy(this::run).isInstanceOf(UsageException.class).hasMessageContaining("expected a sentence");
-        assertThatThrownBy(() -> run("--agents")).isInstanceOf(UsageException.class).hasMessageContaining("--agents");
-        assertThatThrownBy(() -> run("--loud", "stop")).isInstanceOf(UsageException.class)
-                .hasMessageContaining("'--loud'");
+        assertThat(run()).isEqualTo(2);
+        assertThat(err()).contains("orchard parse: expected a sentence");
+        err.reset();
+        assertThat(run("--agents")).isEqualTo(2);
+        assertThat(err()).contains("orchard parse: missing required parameter for option '--agents' (NAMES)");
+        err.reset();
+        assertThat(run("--agents", ",", "stop")).isEqualTo(2);
+        assertThat(err()).contains("orchard parse: invalid value for option '--agents': ',' names no agent");
+        err.reset();
+        assertThat(run("--loud", "stop")).isEqualTo(2);
+        assertThat(err()).contains("orchard parse: unknown option: '--loud'");
+        assertThat(out()).isEmpty();
     }
 
     @Test
@@ -94,7 +106,11 @@ class ParseCommandTest {
         int status = Orchard.run(new String[] {"parse", "--notation", "turn left"}, print(out), print(err));
         assertThat(status).isZero();
         assertThat(out()).isEqualTo("turn(90)\nTurning left.\n");
-        assertThat(new ParseCommand().help()).startsWith("Usage: ./orchard parse");
-        assertThat(Orchard.COMMANDS).extracting(Command::name).contains("parse");
+        out.reset();
+        assertThat(Orchard.run(new String[] {"help", "parse"}, print(out), print(err))).isZero();
+        assertThat(out()).startsWith("Usage: orchard parse [OPTIONS] [SENTENCE...]");
+        out.reset();
+        assertThat(Orchard.run(new String[] {"--help"}, print(out), print(err))).isZero();
+        assertThat(out()).containsPattern("\n  parse +Show how an agent understands an instruction in English\n");
     }
 }

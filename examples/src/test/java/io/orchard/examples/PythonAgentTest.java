@@ -76,6 +76,26 @@ class PythonAgentTest {
         return Files.readAllBytes(recording);
     }
 
+    @Test
+    void withoutAServerThePythonAgentSaysSoInOneLineAndFails() throws Exception {
+        Path script = Path.of("python", "orchard_agent.py").toAbsolutePath();
+        int port;
+        try (java.net.ServerSocket free = new java.net.ServerSocket(0)) {
+            port = free.getLocalPort(); // closed again: nothing listens there
+        }
+        Path log = dir.resolve("agent.log");
+        Process agent = python(script, "--port", String.valueOf(port)).redirectErrorStream(true)
+                .redirectOutput(log.toFile()).start();
+        try {
+            assertThat(agent.waitFor(20, TimeUnit.SECONDS)).isTrue();
+            assertThat(agent.exitValue()).isEqualTo(1);
+            assertThat(Files.readString(log, StandardCharsets.UTF_8)).isEqualTo("orchard_agent.py: no server is"
+                    + " listening at localhost:" + port + "; start one first, for example with ./orchard server\n");
+        } finally {
+            agent.destroyForcibly();
+        }
+    }
+
     private static ProcessBuilder python(Path script, String... args) throws IOException {
         String python = findPython();
         List<String> command = new java.util.ArrayList<>(List.of(python, script.toString()));

@@ -45,6 +45,29 @@ class ReadmeCommandsTest {
                 .contains(" --headless").containsPattern(" --time-limit \\d+"));
     }
 
+    @Test
+    void theReadmesSetUpInstallsEveryPackageCiInstallsOnABareMachine() throws IOException {
+        Matcher need = Pattern.compile("need\\+=\\(([^)]*)\\)").matcher(Files.readString(ROOT.resolve(".ci/run"),
+                StandardCharsets.UTF_8));
+        List<String> packages = new ArrayList<>();
+        while (need.find()) {
+            packages.addAll(List.of(need.group(1).strip().split("\\s+")));
+        }
+        String readme = Files.readString(ROOT.resolve("README.md"), StandardCharsets.UTF_8);
+        Matcher block = CODE_BLOCK.matcher(readme);
+        List<String> installed = new ArrayList<>();
+        while (block.find()) {
+            for (String command : block.group(1).replace("\\\n", " ").lines().toList()) {
+                if (command.strip().startsWith("apt-get install ")) {
+                    installed.addAll(List.of(command.strip().split("\\s+")));
+                }
+            }
+        }
+
+        assertThat(packages).as("the packages .ci/run installs").contains("xvfb", "libgl1-mesa-dri", "python3");
+        assertThat(installed).as("the README's apt-get install").containsAll(packages);
+    }
+
     /** The lines of the README's code blocks that run a program of the repository, in order. */
     private static List<String> readmeCommands() throws IOException {
         String readme = Files.readString(ROOT.resolve("README.md"), StandardCharsets.UTF_8);

@@ -1,6 +1,5 @@
 package io.orchard.protocol;
 
-import com.fasterxml.jackson.annotation.JsonInclude;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.Message;
@@ -12,16 +11,10 @@ import java.util.regex.Pattern;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.JsonParser;
 import tools.jackson.core.JsonToken;
-import tools.jackson.core.StreamReadFeature;
-import tools.jackson.core.StreamWriteFeature;
 import tools.jackson.core.exc.InputCoercionException;
 import tools.jackson.core.exc.StreamReadException;
 import tools.jackson.databind.DeserializationFeature;
-import tools.jackson.databind.MapperFeature;
 import tools.jackson.databind.ObjectReader;
-import tools.jackson.databind.cfg.CoercionAction;
-import tools.jackson.databind.cfg.CoercionInputShape;
-import tools.jackson.databind.type.LogicalType;
 import tools.jackson.databind.ObjectWriter;
 import tools.jackson.databind.exc.InvalidTypeIdException;
 import tools.jackson.databind.exc.ValueInstantiationException;
@@ -35,8 +28,10 @@ import tools.jackson.databind.jsontype.NamedType;
  * long, or {@link #MAX_LARGE_LINE_BYTES} for the messages that carry a model or a world snapshot.
  * Decoding ignores fields it does not know (so newer peers can add fields) and refuses unknown
  * types, missing required fields, values of the wrong JSON type, fractions where integers belong,
- * duplicate keys and non-finite numbers. Every refusal is a {@link ProtocolException} whose message
- * names the message type, the field and the bad value; decoding throws nothing else.
+ * duplicate keys, non-finite numbers and bytes that are not strict UTF-8 (overlong forms,
+ * surrogates, code points beyond U+10FFFF: the error names the byte's offset in the line). Every
+ * refusal is a {@link ProtocolException} whose message names the message type, the field and the
+ * bad value; decoding throws nothing else.
  *
  * <p>Instances are immutable and safe to share between threads.
  */
@@ -53,25 +48,14 @@ public final class MessageCodec {
     private final ObjectReader reader;
     private final ObjectWriter writer;
 
+    /**
+     * A codec with Orchard's rules for reading lines: unknown fields are ignored, a required field that is missing
+     * or null, a fraction where an integer belongs and anything after the object are refused.
+     */
     public MessageCodec() {
-        JsonMapper.Builder builder = JsonMapper.builder()
-                .annotationIntrospector(new RequiredUnlessNullable())
-                .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
-                .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
-                .disable(DeserializationFeature.ACCEPT_FLOAT_AS_INT)
-                .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
-                .enable(DeserializationFeature.FAIL_ON_INVALID_SUBTYPE)
-                .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
-                .withCoercionConfig(LogicalType.Textual, strings -> strings
-                        .setCoercion(CoercionInputShape.Integer, CoercionAction.Fail)
-                        .setCoercion(CoercionInputShape.Float, CoercionAction.Fail)
-                        .setCoercion(CoercionInputShape.Boolean, CoercionAction.Fail))
-                .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
-                .enable(StreamReadFeature.USE_FAST_DOUBLE_PARSER)
-                .enable(StreamWriteFeature.USE_FAST_DOUBLE_WRITER)
-                .changeDefaultPropertyInclusion(inclusion -> inclusion
-                        .withValueInclusion(JsonInclude.Include.NON_NULL)
-                        .withContentInclusion(JsonInclude.Include.NON_NULL));
+        // Fields a newer peer adds are ignored; everything else is read as strictly as any file.
+        JsonMapper.Builder builder = StrictJson.builder()
+                .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
         MessageTypes.all().forEach((name, type) -> builder.registerSubtypes(new NamedType(type, name)));
         JsonMapper mapper = builder.build();
         this.reader = mapper.readerFor(Message.class);
@@ -142,6 +126,10 @@ public final class MessageCodec {
                 throw new ProtocolException(ErrorCode.LINE_TOO_LONG, (type == null ? "line" : MessageTypes.nameOf(type)
                         + " line") + " of " + length + " bytes is longer than the limit of " + MAX_LINE_BYTES);
             }
+        }
+        String encoding = Utf8.problem(utf8, length);
+        if (encoding != null) {
+            throw new ProtocolException(ErrorCode.MALFORMED_JSON, encoding);
         }
         Message message;
         try {

@@ -13,6 +13,7 @@ public final class ProtocolException extends RuntimeException {
 
     private final ErrorCode code;
 
+    /** A failure with its stable code and a message that names the bad value and what was expected. */
     public ProtocolException(ErrorCode code, String message) {
         super(message);
         this.code = code;

@@ -9,8 +9,8 @@ import tools.jackson.databind.introspect.JacksonAnnotationIntrospector;
 /**
  * Makes every record component required on the wire unless it is marked {@link Nullable}. Without
  * this, a missing number would silently decode as 0 and a missing coordinate would move an agent
- * to the origin. Public so that other JSON formats built on the protocol's records (scenario files)
- * read them by the same rule.
+ * to the origin. {@link StrictJson} applies it to every mapper, so that other JSON formats built on
+ * the protocol's records (scenario and checkpoint files) read them by the same rule.
  */
 public final class RequiredUnlessNullable extends JacksonAnnotationIntrospector {
 

@@ -121,6 +121,103 @@ class DecodeErrorsTest {
                 .extracting(e -> ((ProtocolException) e).code()).isEqualTo(ErrorCode.MALFORMED_JSON);
     }
 
+    /** Builds a Say line whose text holds the given bytes, at byte offset {@link #SAY_TEXT_AT}. */
+    private static byte[] sayWith(String hexBytes) {
+        byte[] head = "{\"type\":\"Say\",\"seq\":1,\"agent\":\"Guppy\",\"text\":\"a".getBytes(StandardCharsets.US_ASCII);
+        byte[] tail = "b\"}".getBytes(StandardCharsets.US_ASCII);
+        byte[] middle = java.util.HexFormat.ofDelimiter(" ").parseHex(hexBytes);
+        byte[] line = java.util.Arrays.copyOf(head, head.length + middle.length + tail.length);
+        System.arraycopy(middle, 0, line, head.length, middle.length);
+        System.arraycopy(tail, 0, line, head.length + middle.length, tail.length);
+        return line;
+    }
+
+    private static final int SAY_TEXT_AT = 47;
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', textBlock = """
+        overlong slash, two bytes      | c0 af          | 0 | overlong
+        overlong letter, two bytes     | c1 81          | 0 | overlong
+        overlong slash, three bytes    | e0 80 af       | 0 | overlong
+        overlong slash, four bytes     | f0 80 80 af    | 0 | overlong
+        high surrogate                 | ed a0 80       | 0 | surrogate
+        low surrogate                  | ed bf bf       | 0 | surrogate
+        beyond U+10FFFF                | f4 90 80 80    | 0 | beyond U+10FFFF
+        lead byte beyond F4            | f5 80 80 80    | 0 | never part of UTF-8
+        byte FF                        | ff             | 0 | never part of UTF-8
+        stray continuation byte        | 80             | 0 | never begun
+        second byte not a continuation | e2 28 a1       | 1 | does not continue
+        third byte not a continuation  | e2 82 28       | 2 | does not continue
+        """)
+    void bytesThatAreNotStrictUtf8AreMalformedNamingTheirOffset(String name, String hex, int into, String what) {
+        assertThatThrownBy(() -> codec.decode(sayWith(hex)))
+                .isInstanceOf(ProtocolException.class)
+                .hasMessageContaining("invalid UTF-8 at byte " + (SAY_TEXT_AT + into))
+                .hasMessageContaining(what)
+                .extracting(e -> ((ProtocolException) e).code()).isEqualTo(ErrorCode.MALFORMED_JSON);
+    }
+
+    @Test
+    void aSequenceCutShortByTheEndOfTheLineIsMalformed() {
+        byte[] line = java.util.Arrays.copyOf(sayWith("e2 82"), SAY_TEXT_AT + 2);
+        assertThatThrownBy(() -> codec.decode(line))
+                .isInstanceOf(ProtocolException.class)
+                .hasMessageContaining("invalid UTF-8 at byte " + SAY_TEXT_AT + ": a sequence of 3 bytes cut short");
+    }
+
+    @Test
+    void aNameSpelledWithAnOverlongLetterIsRefusedNotReadAsTheLetter() {
+        byte[] head = "{\"type\":\"Unregister\",\"seq\":1,\"agent\":\"A".getBytes(StandardCharsets.US_ASCII);
+        byte[] line = java.util.Arrays.copyOf(head, head.length + 5);
+        line[head.length] = (byte) 0xc1;
+        line[head.length + 1] = (byte) 0x81;
+        line[head.length + 2] = 'b';
+        line[head.length + 3] = '"';
+        line[head.length + 4] = '}';
+        assertThatThrownBy(() -> codec.decode(line))
+                .isInstanceOf(ProtocolException.class)
+                .hasMessageContaining("invalid UTF-8 at byte " + head.length)
+                .extracting(e -> ((ProtocolException) e).code()).isEqualTo(ErrorCode.MALFORMED_JSON);
+    }
+
+    @ParameterizedTest(name = "U+{0}")
+    @CsvSource(delimiter = '|', textBlock = """
+        0080   | c2 80
+        07FF   | df bf
+        0800   | e0 a0 80
+        D7FF   | ed 9f bf
+        E000   | ee 80 80
+        FFFD   | ef bf bd
+        10000  | f0 90 80 80
+        10FFFF | f4 8f bf bf
+        """)
+    void everyWellFormedEdgeOfUtf8IsRead(String codePoint, String hex) {
+        SayMessage say = (SayMessage) codec.decode(sayWith(hex));
+        assertThat(say.text()).isEqualTo("a" + Character.toString(Integer.parseInt(codePoint, 16)) + "b");
+    }
+
+    @ParameterizedTest(name = "{0} bytes")
+    @CsvSource({"4194305", "4194306"})
+    void aModelOfMoreThan4MiBIsRefusedWhateverItsPadding(int size) {
+        String data = java.util.Base64.getEncoder().encodeToString(new byte[size]);
+        assertThatThrownBy(() -> new ModelSpec(ModelFormat.GLB, null, data))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("data must decode to at most 4194304 bytes");
+        String line = "{\"type\":\"Register\",\"seq\":2,\"name\":\"Guppy\",\"body\":{\"radius\":0.5,\"height\":1.2,"
+                + "\"maxSpeed\":8,\"gripper\":{\"part\":\"hands\",\"reach\":0.6,\"minHeight\":0,\"maxHeight\":1.5},"
+                + "\"sight\":{\"range\":30,\"fieldOfView\":3.14}},\"model\":{\"format\":\"glb\",\"data\":\"" + data + "\"}}";
+        assertThatThrownBy(() -> codec.decode(line))
+                .isInstanceOf(ProtocolException.class)
+                .hasMessageContaining("data must decode to at most 4194304 bytes, it decodes to " + size)
+                .extracting(e -> ((ProtocolException) e).code()).isEqualTo(ErrorCode.INVALID_VALUE);
+    }
+
+    @Test
+    void aModelOfExactly4MiBIsTaken() {
+        byte[] model = new byte[ModelSpec.MAX_MODEL_BYTES];
+        assertThat(ModelSpec.of(ModelFormat.GLB, model).bytes()).hasSize(4_194_304);
+    }
+
     @Test
     void nonAsciiTextSurvives() {
         SayMessage say = new SayMessage(1, "Guppy", "Grüße — ich habe die Banane 🍌");

@@ -1,7 +1,7 @@
 package io.orchard.server;
 
-import io.orchard.protocol.cli.Options;
-import io.orchard.protocol.cli.UsageException;
+import io.orchard.cli.CommandLineErrors;
+import io.orchard.cli.Seed;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Phase;
@@ -12,89 +12,177 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
+import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 /**
  * The world server's command line: {@code ./orchard server [options]}. It prints the game's state
  * once a second and the ranking at the end, and reads commands from its console: {@code start},
  * {@code pause}, {@code continue}, {@code status}, {@code checkpoint [FILE]}, {@code stop}.
+ *
+ * <p>Run on its own ({@link #main}, {@link #run}) it is {@code orchard server}; {@link #command}
+ * hands it to a launcher as its subcommand {@code server}. Exit status: 0 done, 1 failed, 2 bad
+ * command line.
  */
-public final class ServerMain {
+@Command(name = "server", abbreviateSynopsis = true, sortOptions = false,
+        description = {"Run the world server (the world, the game, the protocol)", "",
+            "It holds the world and the game and speaks the protocol on one TCP port; it prints the game's state "
+                    + "every second and the ranking when the game is over."},
+        descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
+        footer = "Console commands: start, pause, continue, status, checkpoint [FILE], stop.")
+public final class ServerMain implements Callable<Integer> {
 
-    static final Options OPTIONS = new Options("orchard server",
-            "Runs the Orchard world server: the world, the game and the protocol on one TCP port.")
-            .value("port", "N", "TCP port; 0 picks a free one", String.valueOf(WorldServer.DEFAULT_PORT))
-            .value("bind", "ADDRESS", "address to listen on; 0.0.0.0 for every interface", "127.0.0.1")
-            .value("seed", "N", "seed of the world; drawn and printed when absent", null)
-            .value("clock", "MODE", "realtime, or lockstep (a tick ends when every agent has ended its turn)",
-                    "realtime")
-            .value("tick-rate", "N", "ticks per simulated second", "20")
-            .value("wait-for", "N", "start the game when N agents have registered (0: at the first)", "0")
-            .value("time-limit", "SECONDS", "length of the game in simulated seconds", "300")
-            .value("turn-deadline", "SECONDS", "lockstep: how long a tick waits for an agent's turn (wall clock); an "
-                    + "agent that misses it 3 times in a row is no longer waited for until it is in time again", "2")
-            .value("scenario", "FILE", "load the world from a scenario file instead of generating it", null)
-            .value("write-scenario", "FILE", "write the world (generated from --seed) as a scenario file and exit",
-                    null)
-            .value("record", "FILE", "record every message accepted and sent, as newline-delimited JSON", null)
-            .value("token", "SECRET", "require clients to present this token in their hello", null)
-            .value("checkpoint", "FILE", "save the whole game to FILE: when fruit is collected, at the end, on the "
-                    + "console's checkpoint command and every --checkpoint-every seconds", null)
-            .value("checkpoint-every", "SECONDS", "with --checkpoint, also save every SECONDS of wall-clock time; "
-                    + "0 for never", "60")
-            .value("resume", "FILE", "continue the game saved in a checkpoint FILE (its world, seed, clock, scores; its "
-                    + "agents wait for their controllers' resume tokens)", null)
-            .flag("quiet", "do not print the status line every second");
+    @Option(names = "--port", paramLabel = "N", defaultValue = "" + WorldServer.DEFAULT_PORT,
+            converter = CommandLines.Port.class, description = "TCP port; 0 picks a free one (default: ${DEFAULT-VALUE})")
+    private int port;
 
-    private ServerMain() {}
+    @Option(names = "--bind", paramLabel = "ADDRESS", defaultValue = "127.0.0.1",
+            description = "Address to listen on; 0.0.0.0 for every interface (default: ${DEFAULT-VALUE})")
+    private String bind;
 
-    /** The help text of the server's command line. */
-    public static String help() {
-        return OPTIONS.help() + "\nConsole commands: start, pause, continue, status, checkpoint [FILE], stop.\n";
+    @Option(names = "--seed", paramLabel = "N", converter = Seed.class,
+            description = "Seed of the world; drawn and printed when absent")
+    private Long seed;
+
+    @Option(names = "--clock", paramLabel = "MODE", defaultValue = "realtime", converter = CommandLines.Clock.class,
+            completionCandidates = CommandLines.Clock.class,
+            description = "The clock: realtime, or lockstep, where a tick ends when every agent has ended its turn "
+                    + "(default: ${DEFAULT-VALUE})")
+    private ClockMode clock;
+
+    @Option(names = "--tick-rate", paramLabel = "N", defaultValue = "20", converter = CommandLines.TickRate.class,
+            description = "Ticks per simulated second (default: ${DEFAULT-VALUE})")
+    private int tickRate;
+
+    @Option(names = "--wait-for", paramLabel = "N", defaultValue = "0", converter = CommandLines.WaitFor.class,
+            description = "Start the game when N agents have registered; 0: at the first (default: ${DEFAULT-VALUE})")
+    private int waitFor;
+
+    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "300",
+            converter = CommandLines.TimeLimit.class,
+            description = "Length of the game in simulated seconds (default: ${DEFAULT-VALUE})")
+    private double timeLimit;
+
+    @Option(names = "--turn-deadline", paramLabel = "SECONDS", defaultValue = "2",
+            converter = CommandLines.TurnDeadline.class,
+            description = "Lockstep: how long a tick waits for an agent's turn (wall clock); an agent that misses it 3 "
+                    + "times in a row is no longer waited for until it is in time again (default: ${DEFAULT-VALUE})")
+    private double turnDeadline;
+
+    @Option(names = "--scenario", paramLabel = "FILE",
+            description = "Load the world from a scenario file instead of generating it")
+    private Path scenario;
+
+    @Option(names = "--write-scenario", paramLabel = "FILE",
+            description = "Write the world (generated from --seed) as a scenario file and exit")
+    private Path writeScenario;
+
+    @Option(names = "--record", paramLabel = "FILE",
+            description = "Record every message accepted and sent, as newline-delimited JSON")
+    private Path record;
+
+    @Option(names = "--token", paramLabel = "SECRET",
+            description = "Require clients to present this token in their hello")
+    private String token;
+
+    @Option(names = "--checkpoint", paramLabel = "FILE",
+            description = "Save the whole game to FILE: when fruit is collected, at the end, on the console's "
+                    + "checkpoint command and every --checkpoint-every seconds")
+    private Path checkpoint;
+
+    @Option(names = "--checkpoint-every", paramLabel = "SECONDS", defaultValue = "60",
+            converter = CommandLines.CheckpointEvery.class,
+            description = "With --checkpoint, also save every SECONDS of wall-clock time; 0 for never (default: "
+                    + "${DEFAULT-VALUE})")
+    private double checkpointEvery;
+
+    @Option(names = "--resume", paramLabel = "FILE",
+            description = "Continue the game saved in a checkpoint FILE (its world, seed, clock, scores; its agents "
+                    + "wait for their controllers' resume tokens)")
+    private Path resume;
+
+    @Option(names = "--quiet", description = "Do not print the status line every second")
+    private boolean quiet;
+
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
+    private boolean help;
+
+    @Spec
+    private CommandSpec spec;
+
+    private final InputStream console;
+    private final PrintStream out;
+    private final PrintStream err;
+
+    private ServerMain(InputStream console, PrintStream out, PrintStream err) {
+        this.console = console;
+        this.out = out;
+        this.err = err;
     }
 
-    public static void main(String[] args) throws Exception {
+    /** Runs the server with the command line {@code args} and exits with its status. */
+    public static void main(String[] args) {
         System.exit(run(Arrays.asList(args), System.in, System.out, System.err));
     }
 
-    /** Runs the command line; returns the process exit code. */
-    public static int run(List<String> args, InputStream console, PrintStream out, PrintStream err) throws Exception {
-        Options.Parsed options;
+    /** Runs the command line as {@code orchard server}; returns the process exit status. */
+    public static int run(List<String> args, InputStream console, PrintStream out, PrintStream err) {
+        return CommandLineErrors.execute(command(console, out, err).setCommandName("orchard server"), args, err);
+    }
+
+    /** The help text of the server's command line. */
+    public static String help() {
+        return command(InputStream.nullInputStream(), System.out, System.err).setCommandName("orchard server")
+                .getUsageMessage(CommandLine.Help.Ansi.OFF);
+    }
+
+    /**
+     * The command line as a picocli command named {@code server}, for a launcher to add as its
+     * subcommand: it reads console commands from {@code console} and prints to {@code out} and
+     * {@code err}.
+     */
+    public static CommandLine command(InputStream console, PrintStream out, PrintStream err) {
+        return new CommandLine(new ServerMain(console, out, err)).setOut(new PrintWriter(out, true))
+                .setErr(new PrintWriter(err, true));
+    }
+
+    /** Runs the server as the options say; picocli calls it once they are parsed. */
+    @Override
+    public Integer call() throws Exception {
         WorldServer.Builder builder = WorldServer.builder();
         try {
-            options = OPTIONS.parse(args);
-            if (options.help()) {
-                out.print(help());
-                return 0;
-            }
-            configure(builder, options);
-        } catch (UsageException | IllegalArgumentException e) {
-            err.println("orchard server: " + e.getMessage());
-            return 2;
+            configure(builder);
+        } catch (IllegalArgumentException e) {
+            throw new ParameterException(spec.commandLine(), e.getMessage(), e);
         }
-        if (options.has("write-scenario")) {
-            Long given = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
-            long seed = given != null ? given : java.util.concurrent.ThreadLocalRandom.current().nextLong(1, 1L << 48);
-            Path file = Path.of(options.string("write-scenario"));
-            ScenarioFile.write(WorldGenerator.standard(seed).generate().toScenario(), file);
-            out.println("wrote the world of seed " + seed + " to " + file);
+        if (writeScenario != null) {
+            long seed = this.seed != null ? this.seed
+                    : java.util.concurrent.ThreadLocalRandom.current().nextLong(1, 1L << 48);
+            ScenarioFile.write(WorldGenerator.standard(seed).generate().toScenario(), writeScenario);
+            out.println("wrote the world of seed " + seed + " to " + writeScenario);
             return 0;
         }
         try (WorldServer server = builder.start()) {
             out.printf(Locale.ROOT, "Orchard server %s listening on port %d, seed %d, %s clock%n", Version.current(),
-                    server.port(), server.seed(), options.has("resume") ? "the saved game's" : options.string("clock"));
-            if (options.has("resume")) {
-                out.println("resumed from " + options.string("resume") + ": " + server.status());
+                    server.port(), server.seed(), resume != null ? "the saved game's" : clock.wireName());
+            if (resume != null) {
+                out.println("resumed from " + resume + ": " + server.status());
             }
             Thread commands = new Thread(() -> readCommands(server, console, out), "orchard-console");
             commands.setDaemon(true);
             commands.start();
-            boolean quiet = options.has("quiet");
             while (!server.gameOver().isDone()) {
                 try {
                     server.gameOver().get(1, java.util.concurrent.TimeUnit.SECONDS);
@@ -116,33 +204,31 @@ public final class ServerMain {
         return 0;
     }
 
-    private static void configure(WorldServer.Builder builder, Options.Parsed options) throws UsageException {
-        builder.port(options.integer("port", 0, 65535)).bind(options.string("bind"))
-                .clock(ClockMode.valueOf(options.choice("clock", "realtime", "lockstep").toUpperCase(Locale.ROOT)))
-                .tickRate(options.integer("tick-rate", 1, 1000))
-                .waitFor(options.integer("wait-for", 0, 10_000))
-                .timeLimit(options.number("time-limit", 0.001, 1e7))
-                .lockstepDeadline(Duration.ofMillis(Math.round(options.number("turn-deadline", 0.001, 3600) * 1000)));
-        Long seed = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
+    private void configure(WorldServer.Builder builder) {
+        builder.port(port).bind(bind)
+                .clock(clock)
+                .tickRate(tickRate)
+                .waitFor(waitFor)
+                .timeLimit(timeLimit)
+                .lockstepDeadline(Duration.ofMillis(Math.round(turnDeadline * 1000)));
         if (seed != null) {
             builder.seed(seed);
         }
-        if (options.has("scenario")) {
-            builder.scenario(Path.of(options.string("scenario")));
+        if (scenario != null) {
+            builder.scenario(scenario);
         }
-        if (options.has("record")) {
-            builder.record(Path.of(options.string("record")));
+        if (record != null) {
+            builder.record(record);
         }
-        if (options.has("token")) {
-            builder.token(options.string("token"));
+        if (token != null) {
+            builder.token(token);
         }
-        double every = options.number("checkpoint-every", 0, 1e7);
-        if (options.has("checkpoint")) {
-            builder.checkpoint(Path.of(options.string("checkpoint")), every > 0 ? Duration.ofMillis((long) (every * 1000))
-                    : null);
+        if (checkpoint != null) {
+            builder.checkpoint(checkpoint, checkpointEvery > 0
+                    ? Duration.ofMillis((long) (checkpointEvery * 1000)) : null);
         }
-        if (options.has("resume")) {
-            builder.resume(Path.of(options.string("resume")));
+        if (resume != null) {
+            builder.resume(resume);
         }
     }
 

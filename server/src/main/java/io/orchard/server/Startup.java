@@ -3,8 +3,6 @@ package io.orchard.server;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.net.NetServer;
 import io.orchard.server.sim.Checkpoint;
-import io.orchard.server.sim.CheckpointFile;
-import io.orchard.server.sim.FileRecorder;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.Recorder;
@@ -13,7 +11,6 @@ import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.sim.TickLoop;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
-import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
@@ -31,11 +28,11 @@ final class Startup {
     private Startup() {}
 
     static WorldServer start(WorldServer.Builder settings) throws IOException {
-        Checkpoint saved = settings.resume != null ? CheckpointFile.read(settings.resume) : null;
+        Checkpoint saved = settings.resume != null ? GameFiles.checkpoint(settings.resume) : null;
         long actualSeed = saved != null ? saved.seed()
                 : settings.seed != null ? settings.seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
         World world = saved != null ? World.fromScenario(saved.world())
-                : settings.scenario != null ? World.fromScenario(ScenarioFile.read(settings.scenario))
+                : settings.scenario != null ? World.fromScenario(GameFiles.scenario(settings.scenario))
                 : WorldGenerator.standard(actualSeed).generate();
         SimulationConfig config = saved != null
                 ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
@@ -44,7 +41,7 @@ final class Startup {
                 : new SimulationConfig(settings.tickRate, settings.clock, settings.timeLimit, settings.waitFor,
                         settings.lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
                         SimulationConfig.DEFAULT.bodyLimits());
-        Recorder recorder = settings.record != null ? FileRecorder.open(settings.record, saved != null)
+        Recorder recorder = settings.record != null ? GameFiles.recorder(settings.record, saved != null)
                 : Recorder.NONE;
         CompletableFuture<List<Score>> over = new CompletableFuture<>();
         List<GameListener> all = new ArrayList<>(settings.listeners);
@@ -75,6 +72,10 @@ final class Startup {
             recorder.close();
             checkpoints.close();
             throw new IOException("interrupted while binding port " + settings.port, e);
+        } catch (IOException e) {
+            recorder.close();
+            checkpoints.close();
+            throw e;
         } catch (RuntimeException e) {
             recorder.close();
             checkpoints.close();

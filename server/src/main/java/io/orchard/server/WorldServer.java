@@ -20,6 +20,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
+import java.util.stream.Collectors;
 
 /**
  * An Orchard world server that any JVM program can embed: it holds the world, runs the game and
@@ -105,7 +106,7 @@ public final class WorldServer implements AutoCloseable {
                 simulation.phase().name().toLowerCase(java.util.Locale.ROOT), simulation.time(), simulation.tick(),
                 simulation.agentNames(), simulation.waitingAgents().isEmpty() ? ""
                         : "  waiting to be resumed " + simulation.waitingAgents(),
-                simulation.fruitLeft(), simulation.ranking())));
+                simulation.fruitLeft(), scores(simulation.ranking()))));
         try {
             return status.get(5, java.util.concurrent.TimeUnit.SECONDS);
         } catch (InterruptedException e) {
@@ -114,6 +115,16 @@ public final class WorldServer implements AutoCloseable {
         } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
             return "status unavailable: " + e;
         }
+    }
+
+    /** The ranking as the status line shows it: "FirstAgent 2 points (1 fruit), Dwarf 0 points (0 fruit)". */
+    static String scores(List<Score> ranking) {
+        if (ranking.isEmpty()) {
+            return "none";
+        }
+        return ranking.stream().map(score -> score.agent() + " " + score.points()
+                + (score.points() == 1 ? " point" : " points") + " (" + score.fruit() + " fruit)")
+                .collect(Collectors.joining(", "));
     }
 
     /**

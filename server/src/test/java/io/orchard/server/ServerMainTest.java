@@ -43,15 +43,28 @@ class ServerMainTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', textBlock = """
-        unknown option   | --colour=blue      | unknown option --colour
-        port too large   | --port=70000       | --port must be 0 to 65535, was 70000
-        clock misspelled | --clock=lockstop   | --clock must be one of realtime, lockstep, was 'lockstop'
-        seed not number  | --seed=abc         | --seed must be a whole number, was 'abc'
-        negative every   | --checkpoint-every=-1 | --checkpoint-every must be
+        unknown option   | --colour=blue      | unknown option: '--colour=blue'
+        port too large   | --port=70000       | invalid value for option '--port': '70000' is out of range (expected a port 0-65535)
+        clock misspelled | --clock=lockstop   | invalid value for option '--clock': 'lockstop' is not a clock (expected one of realtime, lockstep)
+        seed not number  | --seed=abc         | invalid value for option '--seed': 'abc' is not an integer
+        negative every   | --checkpoint-every=-1 | invalid value for option '--checkpoint-every': '-1' is out of range
+        port given twice | --port=1 --port=2  | option '--port' (N) should be specified only once
+        no value         | --port             | missing required parameter for option '--port' (N)
+        stray argument   | 7557               | unexpected argument '7557'
         """)
-    void aBadOptionIsNamedAndExitsWithTwo(String name, String arg, String message) throws Exception {
-        assertThat(run("", arg)).isEqualTo(2);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains(message);
+    void aBadOptionIsNamedAndExitsWithTwo(String name, String line, String message) throws Exception {
+        assertThat(run("", line.split(" "))).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("orchard server: " + message);
+    }
+
+    @Test
+    void aValueOfTheWrongTypeIsNamedWithTheOptionAndWhatWasExpected() throws Exception {
+        assertThat(run("", "--port", "abc")).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).isEqualTo("""
+                orchard server: invalid value for option '--port': 'abc' is not an integer (expected a port 0-65535)
+                Run ./orchard server --help for its options.
+                """.replace("\n", System.lineSeparator()));
+        assertThat(out()).isEmpty();
     }
 
     @Test
@@ -91,6 +104,25 @@ class ServerMainTest {
         assertThat(run("checkpoint\nstart\n", "--port", "0", "--seed", "3", "--time-limit", "0.3", "--tick-rate", "50",
                 "--quiet")).isZero();
         assertThat(out()).contains("has no checkpoint file", "(checkpoint FILE)");
+    }
+
+    @Test
+    void aTakenPortIsNamedWithWhatToDoAndExitsWithOne() throws Exception {
+        try (WorldServer other = WorldServer.builder().port(0).seed(1).start()) {
+            assertThat(run("", "--port", String.valueOf(other.port()))).isEqualTo(1);
+        }
+        assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("orchard server: cannot listen on port ")
+                .contains("address already in use (is another server running? choose another with --port)");
+    }
+
+    @Test
+    void aMissingScenarioOrSavedGameIsNamedWithItsOptionAndExitsWithOne() throws Exception {
+        Path missing = dir.resolve("nonexistent.json");
+        assertThat(run("", "--port", "0", "--scenario", missing.toString())).isEqualTo(1);
+        assertThat(run("", "--port", "0", "--resume", missing.toString())).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).isEqualTo(String.join(System.lineSeparator(),
+                "orchard server: cannot read the scenario file " + missing + " (--scenario): no such file",
+                "orchard server: cannot read the checkpoint " + missing + " (--resume): no such file", ""));
     }
 
     @Test

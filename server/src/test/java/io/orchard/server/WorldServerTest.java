@@ -380,7 +380,7 @@ class WorldServerTest {
         assertThat(back.heading()).isEqualTo(Math.PI);
         GraspResultMessage again = (GraspResultMessage) agent.ask(seq -> new GraspRequestMessage(seq, "Guppy", "F1"));
         assertThat(again.success()).isFalse();
-        assertThat(second.status()).contains("running", "agent=Guppy, points=1").doesNotContain("waiting to be resumed");
+        assertThat(second.status()).contains("running", "scores Guppy 1 point (1 fruit)").doesNotContain("waiting to be resumed");
     }
 
     @Test
@@ -432,7 +432,7 @@ class WorldServerTest {
         }
         assertThat(viewer.await(AgentRemovedMessage.class, r -> r.agent().equals("Guppy")).reason())
                 .isEqualTo("connection closed");
-        assertThat(server.status()).contains("agents []", "agent=Guppy, points=0");
+        assertThat(server.status()).contains("agents []", "scores Guppy 0 points (0 fruit)");
     }
 
     @Test

@@ -2,10 +2,11 @@ package io.orchard.viewer;
 
 import com.jme3.system.AppSettings;
 import com.jme3.system.JmeContext;
-import io.orchard.protocol.cli.UsageException;
+import io.orchard.cli.CommandLineErrors;
 import io.orchard.viewer.replay.Recording;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.PrintWriter;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -13,6 +14,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.logging.Level;
+import picocli.CommandLine;
 
 /**
  * The viewer's command line: {@code ./orchard viewer [options]} (or this class as the main class).
@@ -24,6 +26,7 @@ import java.util.logging.Level;
  * <p>Headless rendering still needs an X display and OpenGL, such as Xvfb with Mesa:
  * {@code xvfb-run -a -s "-screen 0 1280x720x24" ./orchard viewer --headless ...}. A watchdog
  * ({@code --timeout}) bounds every headless run. Exit status: 0 done, 1 failed, 2 bad command line.
+ * {@link #command} hands the command line to a launcher as its subcommand {@code viewer}.
  */
 public final class ViewerMain {
 
@@ -33,6 +36,7 @@ public final class ViewerMain {
     private ViewerMain() {
     }
 
+    /** Runs the viewer with the command line {@code args} and exits with its status. */
     public static void main(String[] args) {
         int status = run(Arrays.asList(args), System.out, System.err);
         System.out.flush();
@@ -41,27 +45,30 @@ public final class ViewerMain {
 
     /** The help text of the viewer's command line. */
     public static String help() {
-        return ViewerOptions.help();
+        return command(System.out, System.err).setCommandName("orchard viewer")
+                .getUsageMessage(CommandLine.Help.Ansi.OFF);
     }
 
     /**
-     * Runs the viewer until it is done (headless) or its window is closed, and returns the exit
-     * status. The caller should exit the JVM afterwards: a stuck graphics driver may leave a thread
-     * behind after a watchdog timeout.
+     * Runs the viewer as {@code orchard viewer} until it is done (headless) or its window is
+     * closed, and returns the exit status. The caller should exit the JVM afterwards: a stuck
+     * graphics driver may leave a thread behind after a watchdog timeout.
      */
     public static int run(List<String> args, PrintStream out, PrintStream err) {
-        ViewerOptions options;
-        try {
-            options = ViewerOptions.parse(args);
-        } catch (UsageException e) {
-            err.println("orchard viewer: " + e.getMessage());
-            err.println("Run ./orchard viewer --help for its options.");
-            return 2;
-        }
-        if (options == null) {
-            out.print(help());
-            return 0;
-        }
+        return CommandLineErrors.execute(command(out, err).setCommandName("orchard viewer"), args, err);
+    }
+
+    /**
+     * The viewer's command line as a picocli command named {@code viewer}, for a launcher to add as
+     * its subcommand; it prints to {@code out} and {@code err}.
+     */
+    public static CommandLine command(PrintStream out, PrintStream err) {
+        return new CommandLine(new ViewerCommand(out, err)).setOut(new PrintWriter(out, true))
+                .setErr(new PrintWriter(err, true));
+    }
+
+    /** Shows the world as the options say; returns the exit status. */
+    static int show(ViewerOptions options, PrintStream out, PrintStream err) {
         Recording recording = null;
         if (options.replay() != null) {
             try {
@@ -76,6 +83,7 @@ public final class ViewerMain {
             err.println("orchard viewer: " + display);
             return 1;
         }
+        JulToSlf4j.install();
         JME_LOG.setLevel(Level.WARNING);
         ViewerApp app = new ViewerApp(options, recording, out, err);
         app.setSettings(settings(options));

@@ -25,15 +25,16 @@ class ViewerMainTest {
     @Test
     void helpPrintsTheOptionsAndExitsZero() {
         assertThat(run("--help")).isZero();
-        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: orchard viewer [options]")
-                .contains("--headless", "--replay FILE");
+        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: orchard viewer [OPTIONS]")
+                .contains("--headless", "--replay=FILE");
     }
 
     @Test
     void aBadCommandLineExitsTwoNamingTheOption() {
         assertThat(run("--size", "huge")).isEqualTo(2);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("orchard viewer: --size must be WIDTHxHEIGHT")
-                .contains("--help");
+        assertThat(err.toString(StandardCharsets.UTF_8))
+                .contains("orchard viewer: invalid value for option '--size': 'huge' is not a size (expected WIDTHxHEIGHT")
+                .contains("./orchard viewer --help");
     }
 
     @Test
@@ -45,8 +46,19 @@ class ViewerMainTest {
     }
 
     @Test
+    void aCorruptRecordingIsNamedWithItsLineAndWhatIsWrong(@TempDir Path dir) throws Exception {
+        Path corrupt = Files.write(dir.resolve("corrupt.ndjson"),
+                new byte[] {'{', '"', 't', 'i', 'c', 'k', '"', ':', '0', '}', '\n', (byte) 0xff, (byte) 0xfe, ' ', 'x', '\n'});
+
+        assertThat(run("--replay", corrupt.toString(), "--headless", "--screenshot", "x.png")).isEqualTo(1);
+        assertThat(err.toString(StandardCharsets.UTF_8)).isEqualTo("orchard viewer: cannot replay " + corrupt
+                + ": line 2 is not UTF-8 text (a malformed byte sequence at byte 1 of 4); 1 of its 2 lines could not"
+                + " be read, and no WorldSnapshot line was found to start from" + System.lineSeparator());
+    }
+
+    @Test
     void aRenderErrorEndsTheRunWithStatusOneNotZero() throws Exception {
-        ViewerOptions options = ViewerOptions.parse(List.of("--headless", "--screenshot", "x.png"));
+        ViewerOptions options = ViewerCommand.parse(List.of("--headless", "--screenshot", "x.png"));
         ViewerApp app = new ViewerApp(options, null, new PrintStream(out, true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
 

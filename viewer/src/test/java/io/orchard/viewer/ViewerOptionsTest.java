@@ -3,7 +3,6 @@ package io.orchard.viewer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import io.orchard.protocol.cli.UsageException;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.viewer.state.Shot;
 import java.nio.file.Path;
@@ -12,15 +11,16 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import picocli.CommandLine.ParameterException;
 
 class ViewerOptionsTest {
 
-    static ViewerOptions parse(String line) throws UsageException {
-        return ViewerOptions.parse(line.isBlank() ? List.of() : Arrays.asList(line.split(" ")));
+    static ViewerOptions parse(String line) {
+        return ViewerCommand.parse(line.isBlank() ? List.of() : Arrays.asList(line.split(" ")));
     }
 
     @Test
-    void withoutOptionsItWatchesTheLocalServerInAWindow() throws UsageException {
+    void withoutOptionsItWatchesTheLocalServerInAWindow() {
         ViewerOptions options = parse("");
 
         assertThat(options.host()).isEqualTo("localhost");
@@ -33,7 +33,7 @@ class ViewerOptionsTest {
     }
 
     @Test
-    void screenshotsPairWithTheirTimesInOrder() throws UsageException {
+    void screenshotsPairWithTheirTimesInOrder() {
         ViewerOptions options = parse("--replay game.ndjson --headless --size 640x360 --screenshot a.png --at 12.5 "
                 + "--screenshot b.png --at 3 --camera 1,2,3 --look-at 0,0,-5 --hud off");
 
@@ -45,15 +45,15 @@ class ViewerOptionsTest {
     }
 
     @Test
-    void aLiveRunsWatchdogAllowsForTheTimeItWaitsFor() throws UsageException {
+    void aLiveRunsWatchdogAllowsForTheTimeItWaitsFor() {
         assertThat(parse("--headless --screenshot a.png --at 100").timeout()).isEqualTo(160);
         assertThat(parse("--headless --screenshot a.png --at 100 --timeout 5").timeout()).isEqualTo(5);
     }
 
     @Test
-    void helpIsNotAnError() throws UsageException {
+    void helpIsNotAnError() {
         assertThat(parse("--help")).isNull();
-        assertThat(ViewerOptions.help()).contains("--replay FILE", "--screenshot FILE", "--every SECONDS",
+        assertThat(ViewerMain.help()).contains("--replay=FILE", "--screenshot=FILE", "--every=SECONDS",
                 "Exit status");
     }
 
@@ -66,19 +66,19 @@ class ViewerOptionsTest {
             "--headless --out shots                               | --out and --until go with --every",
             "--replay game.ndjson --port 7000                     | --replay plays a file",
             "--speed 2                                            | --speed is for --replay",
-            "--replay g.ndjson --speed 1000                       | --speed must be 0.0625 to 64.0, was 1000",
-            "--size 1280                                          | --size must be WIDTHxHEIGHT in pixels",
-            "--size 10x10                                         | each 64 to 8192",
-            "--headless --screenshot a.png --at soon              | --at must be a number of seconds, 0 or more, was 'soon'",
-            "--headless --screenshot a.png --camera 1,2           | --camera must be three numbers X,Y,Z",
+            "--replay g.ndjson --speed 1000                       | option '--speed': '1000' is out of range (expected 0.0625-64",
+            "--size 1280                                          | option '--size': '1280' is not a size (expected WIDTHxHEIGHT in pixels",
+            "--size 10x10                                         | option '--size': '10x10' is not a size (expected WIDTHxHEIGHT in pixels, each 64 to 8192",
+            "--headless --screenshot a.png --at soon              | option '--at' (SECONDS): 'soon' is not a number (expected a number of seconds, 0 or more)",
+            "--headless --screenshot a.png --camera 1,2           | option '--camera': '1,2' is not a point (expected three numbers X,Y,Z",
             "--camera 1,2,3                                       | --camera and --look-at place the headless camera",
-            "--follow 9lives                                      | --follow must be an agent's name",
-            "--shadows maybe                                      | --shadows must be one of on, off, was 'maybe'",
-            "--port 0                                             | --port must be 1 to 65535, was 0",
+            "--follow 9lives                                      | option '--follow': '9lives' is not an agent's name",
+            "--shadows maybe                                      | option '--shadows': 'maybe' is neither on nor off (expected on or off)",
+            "--port 0                                             | option '--port': '0' is out of range (expected a port 1-65535)",
             "--headless --measure 5 --screenshot a.png            | --measure renders as fast as it can",
-            "--fps 3                                              | unknown option --fps"
+            "--fps 3                                              | Unknown options: '--fps', '3'"
     })
     void badCommandLinesAreRefusedNamingTheOption(String line, String message) {
-        assertThatThrownBy(() -> parse(line.strip())).isInstanceOf(UsageException.class).hasMessageContaining(message);
+        assertThatThrownBy(() -> parse(line.strip())).isInstanceOf(ParameterException.class).hasMessageContaining(message);
     }
 }

@@ -6,7 +6,6 @@ import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 
@@ -33,32 +32,22 @@ public final class PathPlanner {
     /** The room kept from obstacles by straight stretches of a path. */
     public static final double MARGIN = 0.15;
 
-    private static final double SQRT2 = Math.sqrt(2);
-    private static final int MAX_EXPANSIONS = 400_000;
-    private static final double ESCAPE = 1.2;
+    /** How near its start or its goal a path may pass too close to obstacles: an agent in a tight spot steps out. */
+    static final double ESCAPE = 1.2;
+
     private static final double SAMPLE = 0.2;
 
     private final WorldMemory memory;
     private final TerrainGrid grid;
+    private final GridSearch search;
     private final double radius;
-    private final float[] cost;
-    private final int[] parent;
-    private final int[] stamp;
-    private final int[] closed;
-    private final Heap open;
-    private int generation;
 
     /** A planner for the agent whose memory this is (the memory knows its body radius). */
     public PathPlanner(WorldMemory memory) {
         this.memory = memory;
         this.grid = new TerrainGrid(memory);
         this.radius = memory.radius();
-        int size = grid.nx * grid.nz;
-        this.cost = new float[size];
-        this.parent = new int[size];
-        this.stamp = new int[size];
-        this.closed = new int[size];
-        this.open = new Heap(size);
+        this.search = new GridSearch(grid, radius);
     }
 
     /** A path from {@code from} to {@code to}: the points to walk through, ending at {@code to}; empty when there is none. */
@@ -78,7 +67,7 @@ public final class PathPlanner {
         if (clear(from, goal, MARGIN, others)) {
             return Optional.of(List.of(goal));
         }
-        int[] cells = search(from, goal, others);
+        int[] cells = search.search(from, goal, standable(goal, 0.02), others);
         if (cells == null) {
             return Optional.empty();
         }
@@ -190,147 +179,6 @@ public final class PathPlanner {
         return Math.max(lo, Math.min(hi, v));
     }
 
-    // ---- A* ---------------------------------------------------------------------------------
-
-    private int[] search(Point2 from, Point2 to, List<Circle> others) {
-        int start = grid.indexOf(from);
-        int goal = grid.indexOf(to);
-        if (++generation == Integer.MAX_VALUE) {
-            Arrays.fill(stamp, 0);
-            Arrays.fill(closed, 0);
-            generation = 1;
-        }
-        byte[] othersMask = others.isEmpty() ? null : othersMask(others, from);
-        boolean goalStandable = standable(to, 0.02);
-        if (goal != start && passable(goal, from, to, goalStandable, othersMask) < 0) {
-            return null;
-        }
-        open.clear();
-        cost[start] = 0;
-        parent[start] = -1;
-        stamp[start] = generation;
-        open.push(start, heuristic(start, goal));
-        int expansions = 0;
-        int nx = grid.nx;
-        while (!open.isEmpty()) {
-            int current = open.pop();
-            if (closed[current] == generation) {
-                continue;
-            }
-            closed[current] = generation;
-            if (current == goal) {
-                return trace(goal);
-            }
-            if (++expansions > MAX_EXPANSIONS) {
-                return null;
-            }
-            int ci = current % nx;
-            int ck = current / nx;
-            for (int dk = -1; dk <= 1; dk++) {
-                for (int di = -1; di <= 1; di++) {
-                    if (di == 0 && dk == 0) {
-                        continue;
-                    }
-                    int i = ci + di;
-                    int k = ck + dk;
-                    if (i < 0 || k < 0 || i >= nx || k >= grid.nz) {
-                        continue;
-                    }
-                    int next = grid.index(i, k);
-                    double step = (di != 0 && dk != 0 ? SQRT2 : 1) * TerrainGrid.CELL;
-                    double penalty = passable(next, from, to, goalStandable, othersMask);
-                    if (penalty < 0) {
-                        continue;
-                    }
-                    if (di != 0 && dk != 0 && (passable(grid.index(ci + di, ck), from, to, goalStandable, othersMask) < 0
-                            || passable(grid.index(ci, ck + dk), from, to, goalStandable, othersMask) < 0)) {
-                        continue; // no corner cutting
-                    }
-                    float g = (float) (cost[current] + step * (1 + penalty + grid.extra[next]));
-                    if (closed[next] != generation && (stamp[next] != generation || g < cost[next])) {
-                        stamp[next] = generation;
-                        cost[next] = g;
-                        parent[next] = current;
-                        open.push(next, g + heuristic(next, goal));
-                    }
-                }
-            }
-        }
-        return null;
-    }
-
-    /** The extra cost of walking through a cell, or -1 when it may not be walked. */
-    private double passable(int cell, Point2 from, Point2 to, boolean goalStandable, byte[] othersMask) {
-        if (othersMask != null && othersMask[cell] != 0) {
-            return -1;
-        }
-        byte state = grid.cells[cell];
-        if (state == TerrainGrid.FREE) {
-            return 0;
-        }
-        if (state == TerrainGrid.NEAR) {
-            return 0.6;
-        }
-        double x = grid.cx(cell);
-        double z = grid.cz(cell);
-        boolean nearStart = Math.hypot(x - from.x(), z - from.z()) < ESCAPE;
-        boolean nearGoal = Math.hypot(x - to.x(), z - to.z()) < ESCAPE;
-        if (state == TerrainGrid.TIGHT) {
-            return nearStart || nearGoal ? 3 : -1;
-        }
-        if (grid.terrain[cell] == TerrainGrid.BLOCKED) {
-            return -1; // water, the castle, the edge or a learned block: never, not even to get going
-        }
-        if (nearStart && Math.hypot(x - from.x(), z - from.z()) < 0.8) {
-            return 6; // next to a trunk where the grid is too coarse to tell: let the agent step out
-        }
-        if (goalStandable && Math.hypot(x - to.x(), z - to.z()) < 0.6) {
-            return 6;
-        }
-        return -1;
-    }
-
-    private byte[] othersMask(List<Circle> others, Point2 from) {
-        byte[] mask = new byte[grid.nx * grid.nz];
-        for (Circle other : others) {
-            double reach = other.radius() + radius + MARGIN;
-            if (Math.hypot(from.x() - other.x(), from.z() - other.z()) < reach) {
-                reach = Math.hypot(from.x() - other.x(), from.z() - other.z()) - 0.05;
-            }
-            int i0 = grid.column(other.x() - reach);
-            int i1 = grid.column(other.x() + reach);
-            int k0 = grid.row(other.z() - reach);
-            int k1 = grid.row(other.z() + reach);
-            for (int k = k0; k <= k1; k++) {
-                for (int i = i0; i <= i1; i++) {
-                    int index = grid.index(i, k);
-                    if (Math.hypot(grid.cx(index) - other.x(), grid.cz(index) - other.z()) < reach) {
-                        mask[index] = 1;
-                    }
-                }
-            }
-        }
-        return mask;
-    }
-
-    private double heuristic(int cell, int goal) {
-        int dx = Math.abs(cell % grid.nx - goal % grid.nx);
-        int dz = Math.abs(cell / grid.nx - goal / grid.nx);
-        return (Math.max(dx, dz) + (SQRT2 - 1) * Math.min(dx, dz)) * TerrainGrid.CELL;
-    }
-
-    private int[] trace(int goal) {
-        int count = 0;
-        for (int c = goal; c != -1; c = parent[c]) {
-            count++;
-        }
-        int[] path = new int[count];
-        for (int c = goal, i = count - 1; c != -1; c = parent[c], i--) {
-            path[i] = c;
-        }
-        return path;
-    }
-
     /** Pulls the path tight: from each corner, on to the farthest point still in straight sight. */
     private List<Point2> straighten(List<Point2> raw, List<Circle> others) {
         List<Point2> tight = new ArrayList<>();
@@ -363,69 +211,5 @@ public final class PathPlanner {
             anchor = good;
         }
         return tight;
-    }
-
-    /** A binary min-heap of cells keyed by float. */
-    private static final class Heap {
-        private int[] items;
-        private float[] keys;
-        private int size;
-
-        Heap(int capacity) {
-            items = new int[Math.max(16, capacity / 8)];
-            keys = new float[items.length];
-        }
-
-        void clear() {
-            size = 0;
-        }
-
-        boolean isEmpty() {
-            return size == 0;
-        }
-
-        void push(int item, double key) {
-            if (size == items.length) {
-                items = Arrays.copyOf(items, size * 2);
-                keys = Arrays.copyOf(keys, size * 2);
-            }
-            int i = size++;
-            while (i > 0) {
-                int up = (i - 1) >>> 1;
-                if (keys[up] <= key) {
-                    break;
-                }
-                items[i] = items[up];
-                keys[i] = keys[up];
-                i = up;
-            }
-            items[i] = item;
-            keys[i] = (float) key;
-        }
-
-        int pop() {
-            int top = items[0];
-            int item = items[--size];
-            float key = keys[size];
-            int i = 0;
-            while (true) {
-                int child = 2 * i + 1;
-                if (child >= size) {
-                    break;
-                }
-                if (child + 1 < size && keys[child + 1] < keys[child]) {
-                    child++;
-                }
-                if (keys[child] >= key) {
-                    break;
-                }
-                items[i] = items[child];
-                keys[i] = keys[child];
-                i = child;
-            }
-            items[i] = item;
-            keys[i] = key;
-            return top;
-        }
     }
 }

@@ -16,7 +16,7 @@ import io.orchard.agents.language.GoTo;
 import io.orchard.agents.language.Head;
 import io.orchard.agents.language.LookAt;
 import io.orchard.agents.language.LookFor;
-import io.orchard.agents.language.Move;
+import io.orchard.agents.language.RelativeMove;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Sequence;
 import io.orchard.agents.language.Stop;
@@ -231,7 +231,7 @@ public final class Errands {
     /** Why the body cannot do this goal at all; null when it may. */
     private String refusal(Goal step) {
         if (step instanceof Collect collect) {
-            return Reach.refusal(collect.what(), kit.motor.body().gripper(), collect.what().words());
+            return FruitHeights.refusal(collect.what(), kit.motor.body().gripper(), collect.what().words());
         }
         return null;
     }
@@ -268,22 +268,22 @@ public final class Errands {
         if (step instanceof Head head) {
             double way = Turning.heading(head.direction());
             if (head.distance() != null) {
-                return Walking.to(kit, Bearings.ahead(kit.here(), way, head.distance()), "Done: I went "
-                        + Move.metres(head.distance()) + " " + head.direction().wireName() + ".");
+                return WalkPursuit.to(kit, Bearings.ahead(kit.here(), way, head.distance()), "Done: I went "
+                        + RelativeMove.metres(head.distance()) + " " + head.direction().wireName() + ".");
             }
-            return Walking.on(kit, way, head.direction().wireName());
+            return WalkPursuit.on(kit, way, head.direction().wireName());
         }
-        if (step instanceof Move move) {
-            double far = move.distance() != null ? move.distance() : Walking.FEW_STEPS;
+        if (step instanceof RelativeMove move) {
+            double far = move.distance() != null ? move.distance() : WalkPursuit.FEW_STEPS;
             return switch (move.direction()) {
-                case FORWARD -> Walking.steps(kit, heading, false, far);
-                case BACKWARD -> Walking.steps(kit, heading + Math.PI, true, far);
-                case LEFT -> Walking.steps(kit, heading + Math.PI / 2, false, far);
-                case RIGHT -> Walking.steps(kit, heading - Math.PI / 2, false, far);
+                case FORWARD -> WalkPursuit.steps(kit, heading, false, far);
+                case BACKWARD -> WalkPursuit.steps(kit, heading + Math.PI, true, far);
+                case LEFT -> WalkPursuit.steps(kit, heading + Math.PI / 2, false, far);
+                case RIGHT -> WalkPursuit.steps(kit, heading - Math.PI / 2, false, far);
             };
         }
         if (step instanceof ComeBack) {
-            return Walking.to(kit, previousOrigin, "I'm back.");
+            return WalkPursuit.to(kit, previousOrigin, "I'm back.");
         }
         if (step instanceof Collect collect) {
             return new Gathering(kit, collect);
@@ -327,6 +327,6 @@ public final class Errands {
         Point2 here = kit.here();
         Point2 tree = found.chosen().where();
         Point2 beyond = Bearings.ahead(tree, Bearings.headingTowards(here, tree), Math.max(10, here.distance(tree)));
-        return Walking.to(kit, beyond, "Done: I went through the forest.");
+        return WalkPursuit.to(kit, beyond, "Done: I went through the forest.");
     }
 }

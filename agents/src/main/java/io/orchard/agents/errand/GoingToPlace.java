@@ -61,7 +61,7 @@ final class GoingToPlace implements Pursuit {
         Place.Relation relation = place.relation();
         if (anchor == null) {
             double heading = relation.sector() == null ? kit.motor.heading() : Turning.heading(relation.sector());
-            return Walking.to(kit, Bearings.ahead(here, heading, INTO), "");
+            return WalkPursuit.to(kit, Bearings.ahead(here, heading, INTO), "");
         }
         boolean river = anchor.kind() == Kind.RIVER || anchor.kind() == Kind.BRIDGE;
         if (river && (relation == Place.Relation.BEYOND || relation == Place.Relation.THIS_SIDE_OF)) {
@@ -84,7 +84,7 @@ final class GoingToPlace implements Pursuit {
     private final class Beside implements Pursuit {
         private final Reference anchor;
         private final Looking looking;
-        private Walking walk;
+        private WalkPursuit walk;
 
         Beside(Reference anchor) {
             this.anchor = anchor;
@@ -103,7 +103,7 @@ final class GoingToPlace implements Pursuit {
                 Point2 here = kit.here();
                 double heading = place.relation().sector() != null ? Turning.heading(place.relation().sector())
                         : Bearings.headingTowards(here, known.where());
-                walk = Walking.to(kit, Bearings.ahead(known.where(), heading, known.size() + INTO), "");
+                walk = WalkPursuit.to(kit, Bearings.ahead(known.where(), heading, known.size() + INTO), "");
             }
             return walk.step();
         }

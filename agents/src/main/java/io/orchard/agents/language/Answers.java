@@ -34,7 +34,7 @@ final class Answers {
     static final String WHAT_LOOK = "What should I look for? Say, for example, 'look for coconuts' or 'look "
             + "around'.";
     static final String WHAT_LOOK_AT = "What should I look at? Say, for example, 'look at the castle'.";
-    static final String WALK_RANGE = "I can walk more than 0 and up to " + (int) Move.MAX_DISTANCE
+    static final String WALK_RANGE = "I can walk more than 0 and up to " + (int) RelativeMove.MAX_DISTANCE
             + " metres at a time; say, for example, 'go north 20 metres'.";
     static final String DISTANCE_WHICH_WAY = "Which way should I walk that far: north, south, east, west, forward,"
             + " back, left or right?";

@@ -18,6 +18,7 @@ public record Collect(Reference what, int count) implements Goal {
     public static final int ALL = Integer.MAX_VALUE;
 
     /** @throws IllegalArgumentException when {@code what} is not fruit or {@code count} is less than 1 */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Collect {
         Objects.requireNonNull(what, "what");
         if (!what.isFruit()) {

@@ -17,6 +17,7 @@ public record Cross(Reference landmark) implements Goal {
             Set.of(Reference.Kind.RIVER, Reference.Kind.BRIDGE, Reference.Kind.FOREST);
 
     /** @throws IllegalArgumentException when the landmark is not the river, a bridge or the forest */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Cross {
         Objects.requireNonNull(landmark, "landmark");
         if (!CROSSABLE.contains(landmark.kind())) {

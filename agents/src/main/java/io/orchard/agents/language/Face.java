@@ -11,6 +11,7 @@ import java.util.Objects;
  */
 public record Face(Sector direction) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Face {
         Objects.requireNonNull(direction, "direction");
     }

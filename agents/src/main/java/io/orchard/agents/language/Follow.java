@@ -12,6 +12,7 @@ import java.util.Objects;
 public record Follow(Reference agent) implements Goal {
 
     /** @throws IllegalArgumentException when the reference is not to an agent */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Follow {
         Objects.requireNonNull(agent, "agent");
         if (agent.kind() != Reference.Kind.AGENT) {

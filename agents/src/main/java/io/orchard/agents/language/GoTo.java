@@ -12,6 +12,7 @@ import java.util.Objects;
  */
 public record GoTo(Reference destination) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GoTo {
         Objects.requireNonNull(destination, "destination");
     }

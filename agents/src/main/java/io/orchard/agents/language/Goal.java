@@ -12,7 +12,7 @@ package io.orchard.agents.language;
  * <p>The goals, in the world's words:
  * <ul>
  *   <li>going: {@link GoTo} a place, {@link Cross} the river or a bridge, {@link Head} in a compass
- *       direction, {@link Move} forward, back, left or right, {@link ComeBack};</li>
+ *       direction, {@link RelativeMove} forward, back, left or right, {@link ComeBack};</li>
  *   <li>collecting: {@link Collect} fruit;</li>
  *   <li>looking: {@link Turn} by an angle, {@link Face} a compass direction, {@link LookAt} an
  *       object, {@link LookFor} something, {@link Explore} an area;</li>
@@ -32,7 +32,7 @@ package io.orchard.agents.language;
  * }</pre>
  */
 public sealed interface Goal
-        permits GoTo, Cross, Head, Move, ComeBack, Collect, Turn, Face, LookAt, LookFor, Explore, Follow,
+        permits GoTo, Cross, Head, RelativeMove, ComeBack, Collect, Turn, Face, LookAt, LookFor, Explore, Follow,
         Stop, Wait, CarryOn, Sequence {
 
     /**

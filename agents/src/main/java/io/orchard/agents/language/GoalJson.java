@@ -52,7 +52,7 @@ public final class GoalJson {
             if (head.distance() != null) {
                 node.put("distance", head.distance());
             }
-        } else if (goal instanceof Move move) {
+        } else if (goal instanceof RelativeMove move) {
             node.put("goal", "move");
             node.put("direction", move.direction().wireName());
             if (move.distance() != null) {

@@ -14,9 +14,10 @@ import java.util.Objects;
  */
 public record Head(Sector direction, @Nullable Double distance) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Head {
         Objects.requireNonNull(direction, "direction");
-        Move.checkDistance(distance);
+        RelativeMove.checkDistance(distance);
     }
 
     /** Walk on in a compass direction, as far as it goes. */

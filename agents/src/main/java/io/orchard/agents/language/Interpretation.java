@@ -47,6 +47,7 @@ public sealed interface Interpretation {
      */
     record Understood(Goal goal, String restatement, Optional<String> addressee) implements Interpretation {
 
+        /** Checks the components; a bad value is refused with an exception that names it. */
         public Understood {
             Objects.requireNonNull(goal, "goal");
             Objects.requireNonNull(restatement, "restatement");
@@ -67,6 +68,10 @@ public sealed interface Interpretation {
     record NotUnderstood(String answer, List<String> unknownWords, Optional<String> addressee)
             implements Interpretation {
 
+        /**
+         * Checks the components and keeps its own copy of the lists; a bad value is refused with an exception
+         * that names it.
+         */
         public NotUnderstood {
             Objects.requireNonNull(answer, "answer");
             unknownWords = List.copyOf(unknownWords);

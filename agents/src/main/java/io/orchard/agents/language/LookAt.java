@@ -11,6 +11,7 @@ import java.util.Objects;
  */
 public record LookAt(Reference target) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public LookAt {
         Objects.requireNonNull(target, "target");
     }

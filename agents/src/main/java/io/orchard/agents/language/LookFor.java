@@ -11,6 +11,7 @@ import java.util.Objects;
  */
 public record LookFor(Reference what) implements Goal {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public LookFor {
         Objects.requireNonNull(what, "what");
     }

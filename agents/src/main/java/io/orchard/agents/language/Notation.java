@@ -27,7 +27,7 @@ final class Notation {
         if (goal instanceof Head head) {
             return "head(" + head.direction().wireName() + distance(head.distance()) + ")";
         }
-        if (goal instanceof Move move) {
+        if (goal instanceof RelativeMove move) {
             return "move(" + move.direction().wireName() + distance(move.distance()) + ")";
         }
         if (goal instanceof Collect collect) {

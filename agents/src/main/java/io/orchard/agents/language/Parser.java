@@ -358,7 +358,7 @@ final class Parser {
             c.next();
         }
         double distance = number.number();
-        if (!(distance > 0 && distance <= Move.MAX_DISTANCE)) {
+        if (!(distance > 0 && distance <= RelativeMove.MAX_DISTANCE)) {
             throw Refusal.answer(Answers.WALK_RANGE);
         }
         return distance;
@@ -369,8 +369,8 @@ final class Parser {
         if (goal instanceof Head head && head.distance() == null) {
             return new Head(head.direction(), distance);
         }
-        if (goal instanceof Move move && move.distance() == null) {
-            return new Move(move.direction(), distance);
+        if (goal instanceof RelativeMove move && move.distance() == null) {
+            return new RelativeMove(move.direction(), distance);
         }
         throw Refusal.answer(Answers.DISTANCE_WHICH_WAY);
     }
@@ -647,10 +647,10 @@ final class Parser {
         Double distance = walk ? distance(c) : null;
         skipVagueAmount(c);
         return switch (t.lemma()) {
-            case "left" -> walk ? new Move(Move.Direction.LEFT, distance) : Turn.left();
-            case "right" -> walk ? new Move(Move.Direction.RIGHT, distance) : Turn.right();
-            case "backward" -> new Move(Move.Direction.BACKWARD, distance);
-            default -> new Move(Move.Direction.FORWARD, distance);
+            case "left" -> walk ? new RelativeMove(RelativeMove.Direction.LEFT, distance) : Turn.left();
+            case "right" -> walk ? new RelativeMove(RelativeMove.Direction.RIGHT, distance) : Turn.right();
+            case "backward" -> new RelativeMove(RelativeMove.Direction.BACKWARD, distance);
+            default -> new RelativeMove(RelativeMove.Direction.FORWARD, distance);
         };
     }
 

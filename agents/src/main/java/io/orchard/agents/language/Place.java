@@ -23,6 +23,7 @@ public record Place(Relation relation, @Nullable Reference anchor) {
      * @throws IllegalArgumentException when the relation needs an anchor and has none, or is
      *                                  {@link Relation#ON_GROUND} and has one
      */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Place {
         Objects.requireNonNull(relation, "relation");
         if (relation == Relation.ON_GROUND && anchor != null) {

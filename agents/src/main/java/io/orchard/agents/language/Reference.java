@@ -44,6 +44,7 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
      * @throws IllegalArgumentException when a name is given for a kind other than an agent, the name
      *                                  is blank, or a {@link Kind#PLACE} reference has no place
      */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Reference {
         Objects.requireNonNull(kind, "kind");
         if (name != null && kind != Kind.AGENT) {

@@ -52,11 +52,11 @@ final class Restatement {
         }
         if (goal instanceof Head head) {
             return head.distance() == null ? "heading " + head.direction().wireName()
-                    : "going " + Move.metres(head.distance()) + " " + head.direction().wireName();
+                    : "going " + RelativeMove.metres(head.distance()) + " " + head.direction().wireName();
         }
-        if (goal instanceof Move move) {
+        if (goal instanceof RelativeMove move) {
             if (move.distance() != null) {
-                String how = Move.metres(move.distance());
+                String how = RelativeMove.metres(move.distance());
                 return switch (move.direction()) {
                     case FORWARD -> "going " + how + " forward";
                     case BACKWARD -> "stepping " + how + " back";

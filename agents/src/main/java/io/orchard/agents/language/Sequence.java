@@ -14,6 +14,10 @@ import java.util.Objects;
 public record Sequence(List<Goal> steps) implements Goal {
 
     /** @throws IllegalArgumentException when there are fewer than two steps or a step is a sequence */
+    /**
+     * Checks the components and keeps its own copy of the lists; a bad value is refused with an exception that
+     * names it.
+     */
     public Sequence {
         steps = List.copyOf(steps);
         if (steps.size() < 2) {

@@ -10,6 +10,7 @@ package io.orchard.agents.language;
 public record Turn(double radians) implements Goal {
 
     /** @throws IllegalArgumentException when the angle is not finite */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Turn {
         if (!Double.isFinite(radians)) {
             throw new IllegalArgumentException("radians must be finite, was " + radians);

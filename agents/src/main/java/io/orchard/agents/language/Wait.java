@@ -13,6 +13,7 @@ public record Wait(double seconds) implements Goal {
     public static final double UNTIL_TOLD = Double.POSITIVE_INFINITY;
 
     /** @throws IllegalArgumentException when {@code seconds} is negative or NaN */
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Wait {
         if (!(seconds >= 0)) {
             throw new IllegalArgumentException("seconds must be at least 0 (or UNTIL_TOLD), was " + seconds);

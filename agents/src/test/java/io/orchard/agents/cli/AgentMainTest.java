@@ -1,9 +1,7 @@
 package io.orchard.agents.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import io.orchard.protocol.cli.UsageException;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.server.WorldServer;
 import java.io.ByteArrayInputStream;
@@ -14,6 +12,8 @@ import java.nio.charset.StandardCharsets;
 import java.util.List;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 class AgentMainTest {
 
@@ -37,27 +37,31 @@ class AgentMainTest {
 
         @Test
         void theHelpListsEveryOption() throws Exception {
-            assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [options]", "--type TYPE",
-                    "dwarf, robot, bunny, guppy, roadrunner", "--name NAME", "--host HOST", "--port N", "--help");
-            assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [options]", "--host HOST", "--port N")
+            assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [OPTIONS]", "--type=TYPE",
+                    "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--help");
+            assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N")
                     .doesNotContain("--type");
             assertThat(AgentMain.agent(List.of("--help"), console(""), print(out), print(err))).isZero();
             assertThat(out()).contains("Usage: orchard agent");
         }
 
-        @Test
-        void wrongCommandLinesAreNamed() {
-            assertThatThrownBy(() -> AgentMain.agent(List.of(), console(""), print(out), print(err)))
-                    .isInstanceOf(UsageException.class)
-                    .hasMessage("--type is required: one of dwarf, robot, bunny, guppy, roadrunner");
-            assertThatThrownBy(() -> AgentMain.agent(List.of("--type", "unicorn"), console(""), print(out), print(err)))
-                    .hasMessage("--type: no agent type 'unicorn'; expected one of dwarf, robot, bunny, guppy, roadrunner");
-            assertThatThrownBy(() -> AgentMain.agent(List.of("--type", "bunny", "--name", "two words"), console(""),
-                    print(out), print(err))).hasMessageContaining("--name must be a letter");
-            assertThatThrownBy(() -> AgentMain.agent(List.of("--type", "bunny", "--port", "0"), console(""), print(out),
-                    print(err))).hasMessage("--port must be 1 to 65535, was 0");
-            assertThatThrownBy(() -> AgentMain.agents(List.of("--type", "bunny"), console(""), print(out), print(err)))
-                    .hasMessageStartingWith("unknown option --type");
+        @ParameterizedTest(name = "{0}")
+        @CsvSource(delimiter = '|', textBlock = """
+            no type         | agent  |                            | orchard agent: missing required option '--type' (expected one of dwarf, robot, bunny, guppy, roadrunner)
+            unknown type    | agent  | --type unicorn             | orchard agent: invalid value for option '--type': no agent type 'unicorn'; expected one of dwarf, robot, bunny, guppy, roadrunner
+            name not a name | agent  | --type bunny --name 9lives | orchard agent: invalid value for option '--name': an agent's name must be a letter followed by up to 31 letters, digits, '_' or '-', was '9lives'
+            port zero       | agent  | --type bunny --port 0      | orchard agent: invalid value for option '--port': '0' is out of range (expected a port 1-65535)
+            port not number | agent  | --type bunny --port seven  | orchard agent: invalid value for option '--port': 'seven' is not an integer (expected a port 1-65535)
+            type of agents  | agents | --type bunny               | orchard agents: unknown options: '--type', 'bunny'
+            """)
+        void wrongCommandLinesAreNamedAndExitWithTwo(String name, String command, String line, String message) {
+            List<String> args = line == null ? List.of() : List.of(line.split(" "));
+            int status = command.equals("agent") ? AgentMain.agent(args, console(""), print(out), print(err))
+                    : AgentMain.agents(args, console(""), print(out), print(err));
+
+            assertThat(status).isEqualTo(2);
+            assertThat(err.toString(StandardCharsets.UTF_8)).contains(message, "Run ./" + message.split(":")[0]
+                    + " --help for its options.");
         }
 
         @Test
@@ -65,7 +69,10 @@ class AgentMainTest {
             int status = AgentMain.agent(List.of("--type", "bunny", "--port", "1"), console(""), print(out), print(err));
 
             assertThat(status).isEqualTo(1);
-            assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("orchard agent: ");
+            assertThat(err.toString(StandardCharsets.UTF_8))
+                    .isEqualTo("orchard agent: no server is listening at localhost:1 (connection refused)"
+                            + System.lineSeparator());
+            assertThat(out()).contains("Bunny (bunny) is connecting to localhost:1").doesNotContain("joins the game");
         }
     }
 
@@ -81,7 +88,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Gup (guppy) joins the game", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
+            assertThat(out()).contains("Gup (guppy) is connecting to 127.0.0.1:", "Gup: Exploring.", "Gup: I didn't understand 'dance'",
                     "Game over (time limit reached). Ranking:", "1. Gup", "Gup: ");
         }
 
@@ -94,7 +101,7 @@ class AgentMainTest {
 
                 assertThat(status).isZero();
             }
-            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner join the game", "Dwarf: Stopping.",
+            assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner are connecting to 127.0.0.1:", "Dwarf: Stopping.",
                     "Roadrunner: Carrying on by myself.", "Guppy: Turning left.", "Start the line with the agent's name",
                     "Game over", "Bunny: ");
         }

@@ -75,7 +75,7 @@ class GoalJsonTest {
     static List<Goal> everyKindOfGoal() {
         Reference castle = Reference.to(Kind.CASTLE);
         return List.of(new GoTo(castle), new Cross(Reference.to(Kind.RIVER)), new Head(Sector.SOUTH),
-                new Move(Move.Direction.BACKWARD), new ComeBack(), Collect.one(Reference.to(Kind.COCONUT)),
+                new RelativeMove(RelativeMove.Direction.BACKWARD), new ComeBack(), Collect.one(Reference.to(Kind.COCONUT)),
                 Turn.around(), new Face(Sector.WEST), new LookAt(castle), new LookFor(Reference.to(Kind.BANANA)),
                 new Explore(Reference.to(Kind.FOREST)), Follow.agent("Dwarf"), new Stop(), new Wait(2.5),
                 new CarryOn(), Sequence.of(new Stop(), new CarryOn()));

@@ -63,10 +63,10 @@ class GoalTest {
     @Test
     void aWalkIsMoreThanNothingAndAtMostAThousandMetres() {
         assertThat(new Head(io.orchard.protocol.value.Sector.NORTH).distance()).isNull();
-        assertThat(new Move(Move.Direction.LEFT, 2.5).distance()).isEqualTo(2.5);
+        assertThat(new RelativeMove(RelativeMove.Direction.LEFT, 2.5).distance()).isEqualTo(2.5);
         org.assertj.core.api.Assertions.assertThatThrownBy(() -> new Head(io.orchard.protocol.value.Sector.NORTH, 0.0))
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("was 0.0");
-        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new Move(Move.Direction.FORWARD, 1000.5))
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new RelativeMove(RelativeMove.Direction.FORWARD, 1000.5))
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("at most 1000");
     }
 

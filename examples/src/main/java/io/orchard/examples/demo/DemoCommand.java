@@ -1,55 +1,80 @@
 package io.orchard.examples.demo;
 
-import io.orchard.examples.OptionsCommand;
+import io.orchard.cli.Decimal;
+import io.orchard.cli.Seed;
+import io.orchard.examples.OptionValues;
 import io.orchard.examples.Orchard;
 import io.orchard.examples.match.Folders;
-import io.orchard.protocol.cli.Options;
-import io.orchard.protocol.cli.UsageException;
 import java.io.PrintStream;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code ./orchard demo [--seed N] [--time-limit S] [--headless] [--out DIR]}: runs a {@link Demo},
  * a whole match of the paper's five agents with a viewer, and prints the ranking.
  */
-public final class DemoCommand extends OptionsCommand {
+@Command(name = "demo", abbreviateSynopsis = true, sortOptions = false,
+        description = {"Run a whole match: a server, the five agents, the viewer", "",
+            "It runs in this one process: a world server with a fresh seed (printed), the paper's five agents, and "
+                    + "the viewer, in a window when there is a display, headless otherwise, writing a screenshot "
+                    + "every " + (int) DemoCommand.EVERY + " s of the game and one of its end to a folder it names. "
+                    + "The game ends at the time limit or when all fruit is collected, and the ranking is printed.",
+            "",
+            "Headless without a display needs xvfb-run (Debian/Ubuntu: apt-get install xvfb xauth)."},
+        descriptionHeading = "%n", optionListHeading = "%nOptions:%n")
+public final class DemoCommand implements Callable<Integer> {
 
     /** Simulated seconds between the headless viewer's screenshots. */
     static final double EVERY = 10;
 
-    private static final Options OPTIONS = new Options("orchard demo",
-            "Runs a whole match in this one process: a world server with a fresh seed (printed), the paper's five"
-                    + "\nagents, and the viewer, in a window when there is a display, headless otherwise, writing a"
-                    + "\nscreenshot every " + (int) EVERY + " s of the game and one of its end to a folder it names."
-                    + "\nThe game ends at the time limit or when all fruit is collected, and the ranking is printed."
-                    + "\n\nHeadless without a display needs xvfb-run (Debian/Ubuntu: apt-get install xvfb xauth).")
-            .value("seed", "N", "seed of the world; drawn and printed when absent", null)
-            .value("time-limit", "SECONDS", "length of the game in simulated (here: wall-clock) seconds", "300")
-            .flag("headless", "render off screen and write screenshots, even where there is a display")
-            .value("out", "DIR", "folder of the screenshots (default: a new folder demo-<date>-<time>)", null);
+    @Option(names = "--seed", paramLabel = "N", converter = Seed.class,
+            description = "Seed of the world; drawn and printed when absent")
+    private Long seed;
+
+    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "300", converter = TimeLimit.class,
+            description = "Length of the game in simulated (here: wall-clock) seconds (default: ${DEFAULT-VALUE})")
+    private double timeLimit;
+
+    @Option(names = "--headless", description = "Render off screen and write screenshots, even where there is a display")
+    private boolean headless;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Folder of the screenshots (default: a new folder demo-<date>-<time>)")
+    private Path dir;
+
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
+    private boolean help;
+
+    @Spec
+    private CommandSpec spec;
+
+    private final PrintStream out;
+    private final PrintStream err;
 
     /** Runs {@code ./orchard demo} with these arguments. */
     public static void main(String[] args) {
         Orchard.runAndExit("demo", args);
     }
 
-    /** The {@code ./orchard demo} command. */
-    public DemoCommand() {
-        super("demo", "run a whole match: a server, the five agents and the viewer, then the ranking", OPTIONS);
+    /** The {@code ./orchard demo} command, printing to these streams. */
+    public DemoCommand(PrintStream out, PrintStream err) {
+        this.out = out;
+        this.err = err;
     }
 
     @Override
-    public int run(List<String> args, PrintStream out, PrintStream err) throws Exception {
-        Options.Parsed options = OPTIONS.parse(args);
-        Long seed = options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE);
-        double timeLimit = options.number("time-limit", 1, 86_400);
+    public Integer call() throws Exception {
         boolean display = hasDisplay();
-        boolean headless = options.has("headless") || !display;
-        if (!headless && options.has("out")) {
-            throw new UsageException("--out is the folder of the headless viewer's screenshots; add --headless to "
-                    + "write them (in a window there are none)");
+        boolean headless = this.headless || !display;
+        if (!headless && dir != null) {
+            throw new ParameterException(spec.commandLine(), "--out is the folder of the headless viewer's "
+                    + "screenshots; add --headless to write them (in a window there are none)");
         }
         Path xvfbRun = null;
         if (headless && !display) {
@@ -61,11 +86,18 @@ public final class DemoCommand extends OptionsCommand {
                 return 1;
             }
         }
-        if (!options.has("headless") && headless) {
+        if (!this.headless && headless) {
             out.println("No display: the viewer runs headless.");
         }
-        Path dir = !headless ? null : options.has("out") ? Folders.given(options.string("out")) : Folders.fresh("demo");
-        return new Demo(seed, timeLimit, headless, dir, xvfbRun, EVERY).play(out, err);
+        Path folder = !headless ? null : dir != null ? Folders.given(dir) : Folders.fresh("demo");
+        return new Demo(seed, timeLimit, headless, folder, xvfbRun, EVERY).play(out, err);
+    }
+
+    /** A game of 1 s to a day. */
+    static final class TimeLimit extends Decimal {
+        TimeLimit() {
+            super(1, 86_400, "1-86400 seconds");
+        }
     }
 
     /** Whether a window can be opened here: on Linux only with an X or Wayland display. */

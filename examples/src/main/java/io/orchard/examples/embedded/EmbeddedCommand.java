@@ -1,31 +1,50 @@
 package io.orchard.examples.embedded;
 
-import io.orchard.examples.OptionsCommand;
-import io.orchard.protocol.cli.Options;
+import io.orchard.cli.Decimal;
+import io.orchard.cli.Seed;
+import io.orchard.examples.OptionValues;
 import java.io.PrintStream;
-import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 
 /** {@code ./orchard embedded [--seed N] [--time-limit SECONDS]}: runs {@link EmbeddedGame}. */
-public final class EmbeddedCommand extends OptionsCommand {
+@Command(name = "embedded", abbreviateSynopsis = true, sortOptions = false,
+        description = {"Run a server and two agents embedded in one JVM", "",
+            "It runs io.orchard.examples.embedded.EmbeddedGame: a world server in this JVM on a free port, Dwarf and "
+                    + "Robot on threads of the same JVM in lockstep, the game's events as they happen, and the "
+                    + "ranking."},
+        descriptionHeading = "%n", optionListHeading = "%nOptions:%n")
+public final class EmbeddedCommand implements Callable<Integer> {
 
-    private static final Options OPTIONS = new Options("orchard embedded",
-            "Runs the embedding example (io.orchard.examples.embedded.EmbeddedGame): a world server in this JVM"
-                    + "\non a free port, Dwarf and Robot on threads of the same JVM in lockstep, the game's events"
-                    + "\nas they happen, and the ranking.")
-            .value("seed", "N", "seed of the world", "1998")
-            .value("time-limit", "SECONDS", "length of the game in simulated seconds", "60");
+    @Option(names = "--seed", paramLabel = "N", defaultValue = "1998", converter = Seed.class,
+            description = "Seed of the world (default: ${DEFAULT-VALUE})")
+    private long seed;
 
-    /** The {@code ./orchard embedded} command. */
-    public EmbeddedCommand() {
-        super("embedded", "run the embedding example: a server and two agents in one JVM, their events, the ranking",
-                OPTIONS);
+    @Option(names = "--time-limit", paramLabel = "SECONDS", defaultValue = "60", converter = TimeLimit.class,
+            description = "Length of the game in simulated seconds (default: ${DEFAULT-VALUE})")
+    private double timeLimit;
+
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
+    private boolean help;
+
+    private final PrintStream out;
+
+    /** The {@code ./orchard embedded} command, printing to {@code out}. */
+    public EmbeddedCommand(PrintStream out) {
+        this.out = out;
     }
 
     @Override
-    public int run(List<String> args, PrintStream out, PrintStream err) throws Exception {
-        Options.Parsed options = OPTIONS.parse(args);
-        EmbeddedGame.play(options.longValue("seed", Long.MIN_VALUE, Long.MAX_VALUE),
-                options.number("time-limit", 1, 3600), out);
+    public Integer call() throws Exception {
+        EmbeddedGame.play(seed, timeLimit, out);
         return 0;
+    }
+
+    /** A game of 1 s to an hour. */
+    static final class TimeLimit extends Decimal {
+        TimeLimit() {
+            super(1, 3600, "1-3600 seconds");
+        }
     }
 }

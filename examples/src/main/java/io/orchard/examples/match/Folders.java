@@ -31,8 +31,7 @@ public final class Folders {
      *
      * @throws IOException naming the path when it is a file or cannot be created
      */
-    public static Path given(String path) throws IOException {
-        Path dir = Path.of(path);
+    public static Path given(Path dir) throws IOException {
         if (Files.exists(dir) && !Files.isDirectory(dir)) {
             throw new IOException("--out must be a folder, and " + dir + " is a file");
         }

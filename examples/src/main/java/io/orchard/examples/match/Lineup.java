@@ -2,25 +2,21 @@ package io.orchard.examples.match;
 
 import io.orchard.agents.AgentController;
 import io.orchard.agents.zoo.Species;
-import io.orchard.examples.firstagent.FirstAgent;
-import io.orchard.protocol.cli.UsageException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
 
 /**
  * The agents of a game, by name: the paper's five ({@code Dwarf}, {@code Robot}, {@code Bunny},
- * {@code Guppy}, {@code Roadrunner}) and the tutorial's {@code FirstAgent}. A line-up makes new
- * agents for every game, since an agent plays one game.
+ * {@code Guppy}, {@code Roadrunner}) and others the caller names, such as the tutorial's
+ * {@code FirstAgent}. A line-up makes new agents for every game, since an agent plays one game.
  */
 public final class Lineup {
-
-    /** The name of the tutorial's agent in a line-up. */
-    static final String FIRST_AGENT = "FirstAgent";
 
     private final List<String> names;
     private final List<Supplier<AgentController>> makers;
@@ -32,37 +28,35 @@ public final class Lineup {
 
     /** The paper's five agents. */
     public static Lineup zoo() {
-        List<String> names = Arrays.stream(Species.values()).map(Species::agentName).toList();
-        try {
-            return parse(String.join(",", names));
-        } catch (UsageException e) {
-            throw new IllegalStateException(e);
-        }
+        return parse(String.join(",", Arrays.stream(Species.values()).map(Species::agentName).toList()), Map.of());
     }
 
     /**
-     * The agents named in a comma-separated list, such as {@code Dwarf,Robot,FirstAgent} (any case).
+     * The agents named in a comma-separated list, such as {@code Dwarf,Robot,FirstAgent} (any case):
+     * the paper's five, and the agents of {@code others} by their names.
      *
-     * @throws UsageException naming an unknown or repeated agent, or an empty list
+     * @throws IllegalArgumentException naming an unknown or repeated agent, or an empty name
      */
-    public static Lineup parse(String list) throws UsageException {
+    public static Lineup parse(String list, Map<String, Supplier<AgentController>> others) {
         List<String> names = new ArrayList<>();
         List<Supplier<AgentController>> makers = new ArrayList<>();
         Set<String> seen = new LinkedHashSet<>();
         for (String word : list.split(",", -1)) {
             String name = word.strip();
             if (name.isEmpty()) {
-                throw new UsageException("--agents must name agents separated by commas, such as Dwarf,Robot; was '"
-                        + list + "'");
+                throw new IllegalArgumentException("'" + list + "' has an empty name (expected agents separated by "
+                        + "commas, such as Dwarf,Robot)");
             }
             if (!seen.add(name.toLowerCase(Locale.ROOT))) {
-                throw new UsageException("--agents names " + name + " twice; each agent plays once per game");
+                throw new IllegalArgumentException("'" + list + "' names " + name
+                        + " twice (expected each agent once: an agent plays once per game)");
             }
-            if (name.equalsIgnoreCase(FIRST_AGENT)) {
-                names.add(FIRST_AGENT);
-                makers.add(() -> new FirstAgent(FIRST_AGENT));
+            String other = others.keySet().stream().filter(name::equalsIgnoreCase).findFirst().orElse(null);
+            if (other != null) {
+                names.add(other);
+                makers.add(others.get(other));
             } else {
-                Species species = species(name);
+                Species species = species(name, others.keySet());
                 names.add(species.agentName());
                 makers.add(species::create);
             }
@@ -80,14 +74,15 @@ public final class Lineup {
         return makers.stream().map(Supplier::get).toList();
     }
 
-    private static Species species(String name) throws UsageException {
+    private static Species species(String name, Set<String> others) {
         for (Species species : Species.values()) {
             if (species.agentName().equalsIgnoreCase(name)) {
                 return species;
             }
         }
-        throw new UsageException("--agents: no agent '" + name + "'; expected some of "
-                + String.join(", ", Arrays.stream(Species.values()).map(Species::agentName).toList()) + ", "
-                + FIRST_AGENT);
+        List<String> known = new ArrayList<>(Arrays.stream(Species.values()).map(Species::agentName).toList());
+        others.stream().sorted().forEach(known::add);
+        throw new IllegalArgumentException("no agent '" + name + "' (expected some of " + String.join(", ", known)
+                + ")");
     }
 }

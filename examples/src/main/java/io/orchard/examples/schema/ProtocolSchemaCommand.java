@@ -1,63 +1,54 @@
 package io.orchard.examples.schema;
 
-import io.orchard.examples.Command;
-import io.orchard.protocol.cli.UsageException;
 import io.orchard.protocol.ProtocolVersion;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code ./orchard protocol-schema [--out FILE]}: prints the {@link ProtocolSchema}, or writes it to
  * a file. {@code ./orchard protocol-schema --out docs/protocol.schema.json} refreshes the copy in the
  * repository after a message changes.
  */
-public final class ProtocolSchemaCommand implements Command {
+@Command(name = "protocol-schema", abbreviateSynopsis = true, sortOptions = false,
+        description = {"Print the JSON Schema of every protocol message", "",
+            "It prints the JSON Schema (draft 2020-12) of every message of the Orchard protocol, version "
+                    + ProtocolVersion.CURRENT + ": one \"oneOf\" branch per message type, the values they carry "
+                    + "under \"$defs\"."},
+        descriptionHeading = "%n", optionListHeading = "%nOptions:%n")
+public final class ProtocolSchemaCommand implements Callable<Integer> {
 
-    private static final String OUT = "--out";
+    @Option(names = "--out", paramLabel = "FILE", description = "Write the schema to FILE instead of standard output")
+    private String file;
 
-    @Override
-    public String name() {
-        return "protocol-schema";
+    @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
+    private boolean help;
+
+    @Spec
+    private CommandSpec spec;
+
+    private final PrintStream out;
+
+    /** The {@code ./orchard protocol-schema} command, printing to {@code out}. */
+    public ProtocolSchemaCommand(PrintStream out) {
+        this.out = out;
     }
 
     @Override
-    public String summary() {
-        return "Print the JSON Schema of every protocol message";
-    }
-
-    @Override
-    public String help() {
-        return """
-                Usage: ./orchard protocol-schema [--out FILE]
-
-                Prints the JSON Schema (draft 2020-12) of every message of the Orchard protocol,
-                version %d: one "oneOf" branch per message type, the values they carry under "$defs".
-
-                Options:
-                  --out FILE  Write the schema to FILE instead of standard output
-                  --help      Show this help
-                """.formatted(ProtocolVersion.CURRENT);
-    }
-
-    @Override
-    public int run(List<String> args, PrintStream out, PrintStream err) throws UsageException, IOException {
-        Path file = null;
-        for (int i = 0; i < args.size(); i++) {
-            String arg = args.get(i);
-            if (arg.equals(OUT) && i + 1 < args.size()) {
-                file = outFile(args.get(++i));
-            } else if (arg.startsWith(OUT + "=")) {
-                file = outFile(arg.substring(OUT.length() + 1));
-            } else if (arg.equals(OUT)) {
-                throw new UsageException(OUT + " needs a file name after it");
-            } else {
-                throw new UsageException("unexpected argument '" + arg + "'; expected " + OUT + " FILE or --help");
-            }
+    public Integer call() throws IOException {
+        if (this.file != null && this.file.isBlank()) {
+            throw new ParameterException(spec.commandLine(), "invalid value for option '--out': '" + this.file
+                    + "' is blank (expected a file name)");
         }
+        Path file = this.file == null ? null : Path.of(this.file);
         String schema = ProtocolSchema.json();
         if (file == null) {
             out.print(schema);
@@ -75,12 +66,5 @@ public final class ProtocolSchemaCommand implements Command {
                     + e.getMessage() + ")", e);
         }
         return 0;
-    }
-
-    private static Path outFile(String name) throws UsageException {
-        if (name.isBlank()) {
-            throw new UsageException(OUT + " needs a file name, was '" + name + "'");
-        }
-        return Path.of(name);
     }
 }

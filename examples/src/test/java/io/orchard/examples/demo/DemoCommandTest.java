@@ -1,10 +1,9 @@
 package io.orchard.examples.demo;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import io.orchard.protocol.cli.UsageException;
+import io.orchard.examples.Orchard;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -34,8 +33,8 @@ class DemoCommandTest {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
 
-        int status = new DemoCommand().run(List.of("--headless", "--time-limit", "4", "--seed", "1998", "--out",
-                shots.toString()), out, out);
+        int status = Orchard.run(new String[] {"demo", "--headless", "--time-limit", "4", "--seed", "1998", "--out",
+                shots.toString()}, out, out);
 
         String printed = bytes.toString(StandardCharsets.UTF_8);
         assertThat(status).as(printed).isZero();
@@ -60,13 +59,23 @@ class DemoCommandTest {
 
     @Test
     void aTimeLimitThatIsNotANumberIsAUsageErrorNamingIt() {
-        assertThatThrownBy(() -> new DemoCommand().run(List.of("--time-limit", "soon"), System.out, System.err))
-                .isInstanceOf(UsageException.class).hasMessage("--time-limit must be a number, was 'soon'");
+        assertThat(usageError("--time-limit", "soon")).contains("orchard demo: invalid value for option "
+                + "'--time-limit': 'soon' is not a number (expected 1-86400 seconds)");
     }
 
     @Test
     void aSeedThatIsNotAWholeNumberIsAUsageErrorNamingIt() {
-        assertThatThrownBy(() -> new DemoCommand().run(List.of("--seed", "1.5"), System.out, System.err))
-                .isInstanceOf(UsageException.class).hasMessage("--seed must be a whole number, was '1.5'");
+        assertThat(usageError("--seed", "1.5"))
+                .contains("orchard demo: invalid value for option '--seed': '1.5' is not an integer");
+    }
+
+    /** What {@code ./orchard demo args} prints on standard error, once it has exited with status 2. */
+    private static String usageError(String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        String[] line = Stream.concat(Stream.of("demo"), Stream.of(args)).toArray(String[]::new);
+        PrintStream none = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+
+        assertThat(Orchard.run(line, none, new PrintStream(err, true, StandardCharsets.UTF_8))).isEqualTo(2);
+        return err.toString(StandardCharsets.UTF_8);
     }
 }

@@ -2,6 +2,7 @@ package io.orchard.examples.firstagent;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.examples.Orchard;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Score;
@@ -40,19 +41,23 @@ class FirstAgentTest {
         }
         ByteArrayOutputStream err = new ByteArrayOutputStream();
 
-        int status = new FirstAgentCommand().run(List.of("--port", String.valueOf(port)),
+        int status = Orchard.run(new String[] {"first-agent", "--port", String.valueOf(port)},
                 new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8),
                 new PrintStream(err, true, StandardCharsets.UTF_8));
 
         assertThat(status).isEqualTo(1);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("no server at localhost:" + port,
-                "./orchard server");
+        assertThat(err.toString(StandardCharsets.UTF_8)).isEqualTo("orchard first-agent: no server is listening at localhost:"
+                + port + " (connection refused); start one first, for example with ./orchard server"
+                + System.lineSeparator());
     }
 
     @Test
     void theFirstAgentIsUnderFortyLinesIncludingItsImports() throws Exception {
         Path source = Path.of("src/main/java/io/orchard/examples/firstagent/FirstAgent.java");
 
-        assertThat(Files.readAllLines(source, StandardCharsets.UTF_8)).hasSizeLessThan(40);
+        // The count alone on failure: the lines themselves are in the reader's editor already.
+        assertThat(Files.readAllLines(source, StandardCharsets.UTF_8).size())
+                .as("lines in %s, which the README and the tutorial say is under 40", source.getFileName())
+                .isLessThan(40);
     }
 }

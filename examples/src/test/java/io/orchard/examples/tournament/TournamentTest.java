@@ -1,9 +1,8 @@
 package io.orchard.examples.tournament;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import io.orchard.protocol.cli.UsageException;
+import io.orchard.examples.Orchard;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -13,6 +12,7 @@ import java.nio.file.Path;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -29,8 +29,8 @@ class TournamentTest {
     static void playThreeShortGames() throws Exception {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
-        int status = new TournamentCommand().run(List.of("--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
-                "--seed-from", "40", "--time-limit", "15", "--out", dir.toString()), out, out);
+        int status = Orchard.run(new String[] {"tournament", "--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
+                "--seed-from", "40", "--time-limit", "15", "--out", dir.toString()}, out, out);
         printed = bytes.toString(StandardCharsets.UTF_8);
         assertThat(status).as(printed).isZero();
     }
@@ -40,8 +40,8 @@ class TournamentTest {
         // Agents on their own threads race to connect and to act; in lockstep that must not show.
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
-        assertThat(new TournamentCommand().run(List.of("--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
-                "--seed-from", "40", "--time-limit", "15", "--out", again.toString()), out, out)).isZero();
+        assertThat(Orchard.run(new String[] {"tournament", "--games", "3", "--agents", "Roadrunner,Bunny,FirstAgent",
+                "--seed-from", "40", "--time-limit", "15", "--out", again.toString()}, out, out)).isZero();
 
         for (String file : List.of("results.csv", "results.json", "results.md")) {
             assertThat(Files.readAllBytes(again.resolve(file))).as(file)
@@ -130,14 +130,31 @@ class TournamentTest {
 
     @Test
     void anUnknownAgentIsAUsageErrorNamingIt() {
-        assertThatThrownBy(() -> new TournamentCommand().run(List.of("--agents", "Dwarf,Gandalf"), System.out,
-                System.err)).isInstanceOf(UsageException.class).hasMessageContaining("no agent 'Gandalf'")
-                .hasMessageContaining("Roadrunner");
+        assertThat(usageError("--agents", "Dwarf,Gandalf"))
+                .contains("orchard tournament: invalid value for option '--agents': no agent 'Gandalf'")
+                .contains("Roadrunner");
     }
 
     @Test
     void aGameCountOutOfRangeIsAUsageErrorNamingIt() {
-        assertThatThrownBy(() -> new TournamentCommand().run(List.of("--games", "0"), System.out, System.err))
-                .isInstanceOf(UsageException.class).hasMessage("--games must be 1 to 1000, was 0");
+        assertThat(usageError("--games", "0")).contains(
+                "orchard tournament: invalid value for option '--games': '0' is out of range (expected 1-1000 games)");
+    }
+
+    @Test
+    void seedsThatDoNotFitIn64BitsAreAUsageErrorNamingTheFirst() {
+        assertThat(usageError("--games", "3", "--seed-from", String.valueOf(Long.MAX_VALUE - 1)))
+                .contains("orchard tournament: invalid value for option '--seed-from': '" + (Long.MAX_VALUE - 1)
+                        + "' is out of range (expected at most " + (Long.MAX_VALUE - 3));
+    }
+
+    /** What {@code ./orchard tournament args} prints on standard error, once it has exited with status 2. */
+    private static String usageError(String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        String[] line = Stream.concat(Stream.of("tournament"), Stream.of(args)).toArray(String[]::new);
+        PrintStream none = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+
+        assertThat(Orchard.run(line, none, new PrintStream(err, true, StandardCharsets.UTF_8))).isEqualTo(2);
+        return err.toString(StandardCharsets.UTF_8);
     }
 }

@@ -13,9 +13,14 @@ import io.orchard.protocol.value.Role;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.net.SocketException;
+import java.net.SocketTimeoutException;
+import java.net.UnknownHostException;
 import java.time.Duration;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
@@ -86,7 +91,10 @@ public final class ProtocolConnection implements AutoCloseable {
      * @param clientName a name for this program, for the server's logs
      * @param listener   receives every server message after the welcome
      * @return the open connection
-     * @throws IOException when the server cannot be reached or refuses the handshake
+     * @throws IOException when the server cannot be reached or refuses the handshake; the message
+     *                     names the host and port and what went wrong: an {@link UnknownHostException}
+     *                     for a host with no address, a {@link ConnectException} when no server
+     *                     listens there
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, Listener listener)
             throws IOException {
@@ -105,7 +113,7 @@ public final class ProtocolConnection implements AutoCloseable {
         Socket socket = new Socket();
         try {
             socket.setTcpNoDelay(true);
-            socket.connect(new InetSocketAddress(host, port), (int) HANDSHAKE_TIMEOUT.toMillis());
+            open(socket, host, port);
             ProtocolConnection connection = new ProtocolConnection(socket, new MessageCodec(), listener);
             connection.readerThread.start();
             connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
@@ -115,6 +123,37 @@ public final class ProtocolConnection implements AutoCloseable {
             socket.close();
             throw e;
         }
+    }
+
+    /**
+     * Connects the socket, in words that name the server and say what went wrong: the JDK's own
+     * ("Connection refused", or just the host's name) do neither.
+     */
+    private static void open(Socket socket, String host, int port) throws IOException {
+        InetSocketAddress address = new InetSocketAddress(host, port);
+        if (address.isUnresolved()) {
+            throw new UnknownHostException("unknown host '" + host + "': no address found for it; expected a host"
+                    + " name or address that resolves, such as localhost or 192.168.1.20");
+        }
+        String server = host + ":" + port;
+        try {
+            socket.connect(address, (int) HANDSHAKE_TIMEOUT.toMillis());
+        } catch (ConnectException e) {
+            boolean refused = String.valueOf(e.getMessage()).toLowerCase(Locale.ROOT).contains("refused");
+            throw because(new ConnectException(refused
+                    ? "no server is listening at " + server + " (connection refused)"
+                    : "cannot connect to " + server + ": " + e.getMessage()), e);
+        } catch (SocketTimeoutException e) {
+            throw because(new SocketTimeoutException("no answer from " + server + " within "
+                    + HANDSHAKE_TIMEOUT.toSeconds() + " s: is the host right, and is the port open to this machine?"), e);
+        } catch (SocketException e) {
+            throw because(new SocketException("cannot connect to " + server + ": " + e.getMessage()), e);
+        }
+    }
+
+    private static <T extends IOException> T because(T failure, IOException cause) {
+        failure.initCause(cause);
+        return failure;
     }
 
     /** The server's welcome: the world's bounds, the tick rate, the clock mode. */

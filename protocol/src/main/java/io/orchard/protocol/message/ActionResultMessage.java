@@ -25,6 +25,7 @@ public record ActionResultMessage(long seq,
                                   @Nullable Vec3 position,
                                   double duration) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ActionResultMessage {
         Checks.nonNegative(seq, "seq");
         if (agent != null) {

@@ -12,6 +12,7 @@ import io.orchard.protocol.value.Checks;
 public record AgentAddedMessage(long tick,
                                 AgentState agent) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AgentAddedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.present(agent, "agent");

@@ -22,6 +22,7 @@ public record AgentMovedMessage(long tick,
                                 double startTime,
                                 double duration) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AgentMovedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -13,6 +13,7 @@ public record AgentRemovedMessage(long tick,
                                   String agent,
                                   String reason) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AgentRemovedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -14,6 +14,7 @@ public record AgentRotatedMessage(long tick,
                                   String agent,
                                   Rotation rotation) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AgentRotatedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

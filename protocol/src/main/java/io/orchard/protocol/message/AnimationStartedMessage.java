@@ -15,6 +15,7 @@ public record AnimationStartedMessage(long tick,
                                       String timeSensor,
                                       boolean loop) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AnimationStartedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -13,6 +13,7 @@ public record AnimationStoppedMessage(long tick,
                                       String agent,
                                       String timeSensor) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AnimationStoppedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -14,6 +14,7 @@ public record CastlePerceptionMessage(long tick,
                                       String agent,
                                       Sector sector) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public CastlePerceptionMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -12,6 +12,7 @@ import io.orchard.protocol.value.Checks;
 public record EndTurnMessage(long seq,
                              long tick) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public EndTurnMessage {
         Checks.nonNegative(seq, "seq");
         Checks.nonNegative(tick, "tick");

@@ -14,6 +14,7 @@ public record ErrorMessage(long seq,
                            ErrorCode code,
                            String text) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ErrorMessage {
         Checks.nonNegative(seq, "seq");
         Checks.present(code, "code");

@@ -16,6 +16,7 @@ public record FruitEatenMessage(long tick,
                                 FruitKind kind,
                                 String agent) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public FruitEatenMessage {
         Checks.nonNegative(tick, "tick");
         Checks.id(fruit, "fruit");

@@ -13,6 +13,7 @@ public record FruitRemovedMessage(long tick,
                                   String fruit,
                                   String agent) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public FruitRemovedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.id(fruit, "fruit");

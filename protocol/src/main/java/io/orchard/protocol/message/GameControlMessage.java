@@ -12,6 +12,7 @@ import io.orchard.protocol.value.GameCommand;
 public record GameControlMessage(long seq,
                                  GameCommand command) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GameControlMessage {
         Checks.nonNegative(seq, "seq");
         Checks.present(command, "command");

@@ -16,6 +16,7 @@ public record GameOverMessage(long tick,
                               String reason,
                               List<Score> ranking) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GameOverMessage {
         Checks.nonNegative(tick, "tick");
         Checks.text(reason, "reason");

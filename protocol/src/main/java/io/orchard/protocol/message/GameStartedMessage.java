@@ -15,6 +15,7 @@ public record GameStartedMessage(long tick,
                                  int fruitCount,
                                  double timeLimit) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GameStartedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.nonNegative(fruitCount, "fruitCount");

@@ -15,6 +15,7 @@ public record GraspRequestMessage(long seq,
                                   String agent,
                                   String fruit) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GraspRequestMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -20,6 +20,7 @@ public record GraspResultMessage(long seq,
                                  @Nullable String reason,
                                  int points) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public GraspResultMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -24,6 +24,7 @@ public record HelloMessage(long seq,
                            @Nullable String token,
                            @Nullable String operatorToken) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public HelloMessage {
         Checks.nonNegative(seq, "seq");
         if (protocolVersion <= 0) {

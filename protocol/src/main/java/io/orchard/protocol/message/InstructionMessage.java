@@ -17,6 +17,7 @@ public record InstructionMessage(long seq,
                                  String text,
                                  @Nullable String from) implements ClientMessage, ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public InstructionMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

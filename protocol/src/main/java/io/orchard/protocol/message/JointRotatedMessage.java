@@ -16,6 +16,7 @@ public record JointRotatedMessage(long tick,
                                   String joint,
                                   Rotation rotation) implements ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public JointRotatedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

@@ -11,6 +11,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record KeepAliveMessage(long seq) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public KeepAliveMessage {
         Checks.nonNegative(seq, "seq");
     }

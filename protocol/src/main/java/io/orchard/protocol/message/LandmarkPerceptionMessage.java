@@ -20,6 +20,7 @@ public record LandmarkPerceptionMessage(long tick,
                                         @Nullable PerceivedRiver river,
                                         List<PerceivedBridge> bridges) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public LandmarkPerceptionMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

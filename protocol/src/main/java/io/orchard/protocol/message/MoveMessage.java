@@ -19,6 +19,7 @@ public record MoveMessage(long seq,
                           Vec3 from,
                           Vec3 to) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public MoveMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -29,6 +29,7 @@ public record PerceptionMessage(long tick,
                                 List<PerceivedAgent> agents,
                                 List<PerceivedFruit> fruit) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceptionMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");

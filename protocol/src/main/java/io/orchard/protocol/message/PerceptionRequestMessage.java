@@ -16,6 +16,7 @@ public record PerceptionRequestMessage(long seq,
                                        String agent,
                                        int every) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceptionRequestMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

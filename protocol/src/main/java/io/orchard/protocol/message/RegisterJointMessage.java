@@ -14,6 +14,7 @@ public record RegisterJointMessage(long seq,
                                    String agent,
                                    String joint) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RegisterJointMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

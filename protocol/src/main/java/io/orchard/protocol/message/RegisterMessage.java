@@ -24,6 +24,7 @@ public record RegisterMessage(long seq,
                               @Nullable ModelSpec model,
                               @Nullable String resumeToken) implements ClientMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RegisterMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(name, "name");

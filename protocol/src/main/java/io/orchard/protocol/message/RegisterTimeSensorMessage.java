@@ -14,6 +14,7 @@ public record RegisterTimeSensorMessage(long seq,
                                         String agent,
                                         String timeSensor) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RegisterTimeSensorMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -28,6 +28,7 @@ public record RegisteredMessage(long seq,
                                 @Nullable String resumeToken,
                                 @Nullable Long seed) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RegisteredMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -14,6 +14,7 @@ public record SayMessage(long seq,
                          String agent,
                          String text) implements ClientMessage, ServerMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public SayMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

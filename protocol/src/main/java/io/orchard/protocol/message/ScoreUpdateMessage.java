@@ -14,6 +14,7 @@ import java.util.List;
 public record ScoreUpdateMessage(long tick,
                                  List<Score> scores) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ScoreUpdateMessage {
         Checks.nonNegative(tick, "tick");
         scores = Checks.list(scores, "scores");

@@ -16,6 +16,7 @@ public record SetJointRotationMessage(long seq,
                                       String joint,
                                       Rotation rotation) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public SetJointRotationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -14,6 +14,7 @@ public record SetRotationMessage(long seq,
                                  String agent,
                                  Rotation rotation) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public SetRotationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

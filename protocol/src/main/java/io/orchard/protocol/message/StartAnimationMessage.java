@@ -15,6 +15,7 @@ public record StartAnimationMessage(long seq,
                                     String timeSensor,
                                     boolean loop) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public StartAnimationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

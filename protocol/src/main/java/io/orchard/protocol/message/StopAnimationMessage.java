@@ -13,6 +13,7 @@ public record StopAnimationMessage(long seq,
                                    String agent,
                                    String timeSensor) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public StopAnimationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

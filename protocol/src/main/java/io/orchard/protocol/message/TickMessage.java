@@ -11,6 +11,7 @@ import io.orchard.protocol.value.Checks;
 public record TickMessage(long tick,
                           double time) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public TickMessage {
         Checks.nonNegative(tick, "tick");
         Checks.nonNegative(time, "time");

@@ -11,6 +11,7 @@ import io.orchard.protocol.value.Checks;
 public record UnregisterMessage(long seq,
                                 String agent) implements ClientMessage, AgentMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public UnregisterMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");

@@ -26,6 +26,7 @@ public record WelcomeMessage(long seq,
                              ClockMode clock,
                              long tick) implements ServerMessage, Reply {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public WelcomeMessage {
         Checks.nonNegative(seq, "seq");
         if (protocolVersion <= 0) {

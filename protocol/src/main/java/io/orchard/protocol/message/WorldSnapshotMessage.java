@@ -35,6 +35,7 @@ public record WorldSnapshotMessage(long tick,
                                    List<FruitState> fruit,
                                    List<Score> scores) implements ServerMessage {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public WorldSnapshotMessage {
         Checks.nonNegative(tick, "tick");
         Checks.nonNegative(time, "time");

@@ -17,6 +17,7 @@ import java.util.List;
 public record AgentState(String name, Body body, Vec3 position, double heading, @Nullable ModelSpec model,
                          List<String> joints, List<String> timeSensors) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public AgentState {
         Checks.name(name, "name");
         Checks.present(body, "body");

@@ -13,6 +13,7 @@ package io.orchard.protocol.value;
  */
 public record Body(double radius, double height, double maxSpeed, Gripper gripper, Sight sight) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Body {
         Checks.positive(radius, "radius");
         Checks.positive(height, "height");

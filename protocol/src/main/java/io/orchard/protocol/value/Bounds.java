@@ -10,6 +10,7 @@ package io.orchard.protocol.value;
  */
 public record Bounds(double minX, double minZ, double maxX, double maxZ) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Bounds {
         Checks.finite(minX, "minX");
         Checks.finite(minZ, "minZ");
@@ -21,14 +22,17 @@ public record Bounds(double minX, double minZ, double maxX, double maxZ) {
         }
     }
 
+    /** The extent along x: {@code maxX - minX}. */
     public double width() {
         return maxX - minX;
     }
 
+    /** The extent along z: {@code maxZ - minZ}. */
     public double depth() {
         return maxZ - minZ;
     }
 
+    /** Whether the point (x, z) lies inside the rectangle or on its edge. */
     public boolean contains(double x, double z) {
         return x >= minX && x <= maxX && z >= minZ && z <= maxZ;
     }

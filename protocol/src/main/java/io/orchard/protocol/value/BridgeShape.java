@@ -10,6 +10,7 @@ package io.orchard.protocol.value;
  */
 public record BridgeShape(String id, Point2 entryA, Point2 entryB, double width) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public BridgeShape {
         Checks.id(id, "id");
         Checks.present(entryA, "entryA");

@@ -10,6 +10,7 @@ import java.util.List;
  */
 public record CastleShape(List<Point2> footprint, double height) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public CastleShape {
         footprint = Checks.list(footprint, "footprint");
         if (footprint.size() < 3) {

@@ -20,6 +20,7 @@ public final class Checks {
 
     private Checks() {}
 
+    /** {@code value} if it is not null; otherwise an exception says the field is missing. */
     public static <T> T present(T value, String field) {
         if (value == null) {
             throw new IllegalArgumentException("missing field '" + field + "'");
@@ -27,6 +28,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is a finite number (not NaN, not infinite). */
     public static double finite(double value, String field) {
         if (!Double.isFinite(value)) {
             throw new IllegalArgumentException(field + " must be a finite number, was " + value);
@@ -34,6 +36,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is finite and greater than 0. */
     public static double positive(double value, String field) {
         finite(value, field);
         if (value <= 0) {
@@ -42,6 +45,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is finite and 0 or more. */
     public static double nonNegative(double value, String field) {
         finite(value, field);
         if (value < 0) {
@@ -50,6 +54,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is 0 or more. */
     public static long nonNegative(long value, String field) {
         if (value < 0) {
             throw new IllegalArgumentException(field + " must not be negative, was " + value);
@@ -57,6 +62,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is present and matches {@link #NAME}. */
     public static String name(String value, String field) {
         present(value, field);
         if (!isName(value)) {
@@ -94,6 +100,7 @@ public final class Checks {
         return value;
     }
 
+    /** {@code value} if it is present and at most {@link #MAX_TEXT} characters long. */
     public static String text(String value, String field) {
         present(value, field);
         if (value.length() > MAX_TEXT) {
@@ -108,6 +115,10 @@ public final class Checks {
         return value == null ? null : text(value, field);
     }
 
+    /**
+     * {@code value}, copied, if it is present and holds no null; otherwise an exception names the field and the
+     * null's index.
+     */
     public static <T> List<T> list(List<T> value, String field) {
         present(value, field);
         for (int i = 0; i < value.size(); i++) {

@@ -10,6 +10,7 @@ package io.orchard.protocol.value;
  */
 public record FruitState(String id, FruitKind kind, Vec3 position, @Nullable String support) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public FruitState {
         Checks.id(id, "id");
         Checks.present(kind, "kind");

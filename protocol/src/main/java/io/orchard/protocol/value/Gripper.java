@@ -12,6 +12,7 @@ package io.orchard.protocol.value;
  */
 public record Gripper(String part, double reach, double minHeight, double maxHeight) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Gripper {
         Checks.name(part, "part");
         Checks.positive(reach, "reach");

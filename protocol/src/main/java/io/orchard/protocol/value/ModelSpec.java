@@ -17,6 +17,7 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
     /** The largest model, in bytes before Base64 encoding: 4 MiB. */
     public static final int MAX_MODEL_BYTES = 4 * 1024 * 1024;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ModelSpec {
         Checks.present(format, "format");
         if (format == ModelFormat.BUNDLED) {
@@ -33,10 +34,16 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
                 throw new IllegalArgumentException("data must decode to at most " + MAX_MODEL_BYTES
                         + " bytes, its Base64 text has " + data.length() + " characters");
             }
+            int size;
             try {
-                Base64.getDecoder().decode(data);
+                size = Base64.getDecoder().decode(data).length;
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("data must be Base64: " + e.getMessage());
+            }
+            // The length test above lets through up to two bytes more than the limit: count exactly.
+            if (size > MAX_MODEL_BYTES) {
+                throw new IllegalArgumentException("data must decode to at most " + MAX_MODEL_BYTES
+                        + " bytes, it decodes to " + size);
             }
         }
     }

@@ -11,6 +11,7 @@ package io.orchard.protocol.value;
  */
 public record Obstacle(String id, ObjectKind kind, Point2 position, double radius, double height) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Obstacle {
         Checks.id(id, "id");
         Checks.present(kind, "kind");

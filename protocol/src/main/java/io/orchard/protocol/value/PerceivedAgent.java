@@ -10,6 +10,7 @@ package io.orchard.protocol.value;
  */
 public record PerceivedAgent(String name, RelativePosition at, double heading, double radius) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceivedAgent {
         Checks.name(name, "name");
         Checks.present(at, "at");

@@ -10,6 +10,7 @@ package io.orchard.protocol.value;
  */
 public record PerceivedBridge(String id, RelativePosition entryA, RelativePosition entryB, double width) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceivedBridge {
         Checks.id(id, "id");
         Checks.present(entryA, "entryA");

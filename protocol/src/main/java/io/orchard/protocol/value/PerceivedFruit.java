@@ -13,6 +13,7 @@ package io.orchard.protocol.value;
  */
 public record PerceivedFruit(String id, FruitKind kind, Vec3 position, double radius, @Nullable String support) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceivedFruit {
         Checks.id(id, "id");
         Checks.present(kind, "kind");

@@ -11,6 +11,7 @@ package io.orchard.protocol.value;
  */
 public record PerceivedObject(String id, ObjectKind kind, RelativePosition at, double radius, double height) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceivedObject {
         Checks.id(id, "id");
         Checks.present(kind, "kind");

@@ -9,6 +9,7 @@ package io.orchard.protocol.value;
  */
 public record PerceivedRiver(RelativePosition nearest, double across) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public PerceivedRiver {
         Checks.present(nearest, "nearest");
         Checks.finite(across, "across");

@@ -9,6 +9,7 @@ package io.orchard.protocol.value;
  */
 public record Point2(double x, double z) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Point2 {
         Checks.finite(x, "x");
         Checks.finite(z, "z");
@@ -19,6 +20,7 @@ public record Point2(double x, double z) {
         return new Vec3(x, y, z);
     }
 
+    /** The straight-line distance to {@code other} on the ground. */
     public double distance(Point2 other) {
         double dx = other.x - x;
         double dz = other.z - z;

@@ -9,6 +9,7 @@ package io.orchard.protocol.value;
  */
 public record RelativePosition(double distance, double bearing) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RelativePosition {
         Checks.nonNegative(distance, "distance");
         Checks.finite(bearing, "bearing");

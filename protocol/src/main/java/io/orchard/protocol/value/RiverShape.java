@@ -10,6 +10,7 @@ import java.util.List;
  */
 public record RiverShape(List<Point2> outline) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RiverShape {
         outline = Checks.list(outline, "outline");
         if (outline.size() < 3) {

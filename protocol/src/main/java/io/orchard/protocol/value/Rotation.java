@@ -15,6 +15,7 @@ public record Rotation(Vec3 axis, double angle) {
     /** The up axis, about which agents turn. */
     public static final Vec3 UP = new Vec3(0, 1, 0);
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Rotation {
         Checks.present(axis, "axis");
         Checks.finite(angle, "angle");

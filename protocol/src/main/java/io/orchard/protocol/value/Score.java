@@ -9,6 +9,7 @@ package io.orchard.protocol.value;
  */
 public record Score(String agent, int points, int fruit) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Score {
         Checks.name(agent, "agent");
         Checks.nonNegative(points, "points");

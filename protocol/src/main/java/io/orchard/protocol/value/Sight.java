@@ -9,6 +9,7 @@ package io.orchard.protocol.value;
  */
 public record Sight(double range, double fieldOfView) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Sight {
         Checks.positive(range, "range");
         Checks.positive(fieldOfView, "fieldOfView");

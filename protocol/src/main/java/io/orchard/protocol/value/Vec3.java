@@ -13,6 +13,7 @@ public record Vec3(double x, double y, double z) {
     /** The origin. */
     public static final Vec3 ZERO = new Vec3(0, 0, 0);
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Vec3 {
         Checks.finite(x, "x");
         Checks.finite(y, "y");
@@ -31,14 +32,17 @@ public record Vec3(double x, double y, double z) {
         return Math.sqrt(dx * dx + dz * dz); // Math.hypot guards against overflow we cannot have, slowly
     }
 
+    /** This vector plus {@code other}, component by component. */
     public Vec3 plus(Vec3 other) {
         return new Vec3(x + other.x, y + other.y, z + other.z);
     }
 
+    /** This vector less {@code other}, component by component. */
     public Vec3 minus(Vec3 other) {
         return new Vec3(x - other.x, y - other.y, z - other.z);
     }
 
+    /** This vector scaled by {@code factor}. */
     public Vec3 times(double factor) {
         return new Vec3(x * factor, y * factor, z * factor);
     }

@@ -23,9 +23,11 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.OutputStream;
+import java.net.ConnectException;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
@@ -134,6 +136,25 @@ class ProtocolConnectionTest {
         assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", m -> { }))
                 .isInstanceOf(IOException.class)
                 .hasMessageContaining("version_mismatch: server speaks protocol 2, client 1");
+    }
+
+    @Test
+    void connectingWhereNoServerListensNamesTheHostAndPortAndSaysSo() throws IOException {
+        int port;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            port = free.getLocalPort(); // closed again: nothing listens there
+        }
+        assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", m -> { }))
+                .isInstanceOf(ConnectException.class)
+                .hasMessage("no server is listening at 127.0.0.1:" + port + " (connection refused)");
+    }
+
+    @Test
+    void connectingToAnUnknownHostNamesIt() {
+        // .invalid is reserved: it never resolves (RFC 2606)
+        assertThatThrownBy(() -> ProtocolConnection.connect("nosuchhost.invalid", 7557, Role.AGENT, "test", m -> { }))
+                .isInstanceOf(UnknownHostException.class)
+                .hasMessageStartingWith("unknown host 'nosuchhost.invalid'");
     }
 
     @Test

@@ -7,7 +7,6 @@ import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
@@ -18,12 +17,10 @@ import org.slf4j.LoggerFactory;
 @Sharable
 final class Admission extends ChannelInboundHandlerAdapter {
 
-    private static final Logger log = LoggerFactory.getLogger(Admission.class);
+    private static final RareWarnings warnings = new RareWarnings(LoggerFactory.getLogger(Admission.class));
 
     private final int maxConnections;
     private final AtomicInteger open = new AtomicInteger();
-    private final java.util.concurrent.atomic.AtomicLong lastWarning = new java.util.concurrent.atomic.AtomicLong(
-            System.nanoTime() - 2_000_000_000L);
 
     Admission(int maxConnections) {
         this.maxConnections = maxConnections;
@@ -35,13 +32,8 @@ final class Admission extends ChannelInboundHandlerAdapter {
         ctx.channel().closeFuture().addListener(closed -> open.decrementAndGet());
         if (now > maxConnections) {
             ctx.channel().config().setAutoRead(false);
-            long time = System.nanoTime();
-            long last = lastWarning.get();
-            // A flood of connections must not become a flood of log lines: one a second at most.
-            if (time - last > 1_000_000_000L && lastWarning.compareAndSet(last, time)) {
-                log.warn("refusing {} and others like it: {} connections are open, the most this server takes",
-                        ctx.channel().remoteAddress(), maxConnections);
-            }
+            warnings.warn("refusing {}: {} connections are open, the most this server takes",
+                    ctx.channel().remoteAddress(), maxConnections);
             ctx.writeAndFlush(new ErrorMessage(0, ErrorCode.TOO_MANY_AGENTS, "the server takes at most "
                     + maxConnections + " connections; try again later")).addListener(ChannelFutureListener.CLOSE);
             return;

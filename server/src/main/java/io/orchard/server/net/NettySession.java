@@ -4,6 +4,7 @@ import io.netty.buffer.ByteBuf;
 import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
@@ -11,6 +12,7 @@ import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.EncodedLine;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -18,10 +20,11 @@ import org.slf4j.LoggerFactory;
 /**
  * A client session over a Netty channel. What the simulation sends during a tick is collected here
  * and handed to the channel's I/O thread when the tick flushes ({@link TickWrites}), which encodes
- * it all into one buffer and writes it once: a tick costs one write per client rather than one per
- * message, and no encoding on the tick's thread. A client that stops reading is cut off, so it
- * can neither stall the tick nor grow the heap: when its channel has stayed unwritable longer than
- * the grace, or its queue passes the hard cap.
+ * it all into one buffer and queues it in the client's {@link Outbox}: a tick costs one write per
+ * client rather than one per message, and no encoding on the tick's thread. The data of an agent's
+ * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
+ * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
+ * tick nor grow the server's memory.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -36,20 +39,21 @@ final class NettySession implements ClientSession {
     private final Role role;
     private final int version;
     private final Channel channel;
-    private final NetLimits limits;
-    private final TickWrites writes;
-    private volatile long unwritableSince = -1;
+    private final SessionContext shared;
+    private final Outbox outbox;
+    private final AtomicBoolean ended = new AtomicBoolean();
     private List<Object> batch = new ArrayList<>();
     /** Ticks whose messages were handed to the I/O thread and not yet written. */
     private final AtomicInteger unwritten = new AtomicInteger();
 
-    NettySession(long id, Role role, int version, Channel channel, NetLimits limits, TickWrites writes) {
-        this.writes = writes;
+    /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
+    NettySession(long id, Role role, int version, Channel channel, SessionContext shared, Outbox outbox) {
         this.id = id;
         this.role = role;
         this.version = version;
         this.channel = channel;
-        this.limits = limits;
+        this.shared = shared;
+        this.outbox = outbox;
     }
 
     @Override
@@ -69,14 +73,14 @@ final class NettySession implements ClientSession {
 
     @Override
     public void send(ServerMessage message) {
-        if (keepUp()) {
+        if (isOpen()) {
             batch.add(message);
         }
     }
 
     @Override
     public void send(EncodedLine line) {
-        if (keepUp()) {
+        if (isOpen()) {
             batch.add(line);
         }
     }
@@ -88,29 +92,38 @@ final class NettySession implements ClientSession {
         }
         List<Object> out = batch;
         batch = new ArrayList<>(Math.max(8, out.size()));
-        if (!channel.isActive()) {
+        if (!isOpen()) {
             return;
         }
         if (unwritten.incrementAndGet() > MAX_UNWRITTEN_TICKS) {
             // The I/O thread has not even encoded this client's last ticks: do not queue more.
-            log.warn("cutting off {} client #{}: {} ticks of messages not yet written", role.wireName(), id,
-                    unwritten.get());
-            channel.close();
+            unwritten.decrementAndGet();
+            outbox.cutSoon(MAX_UNWRITTEN_TICKS + " ticks of messages for this client are not yet written");
             return;
         }
-        writes.submit(channel.eventLoop(), () -> write(out));
+        shared.writes().submit(channel.eventLoop(), () -> write(out));
     }
 
-    /** On the channel's I/O thread: the tick's messages, encoded one after the other into one buffer. */
+    /**
+     * On the channel's I/O thread: the tick's messages, encoded one after the other into one buffer,
+     * except the data of models, which go out from the copy every client shares.
+     */
     private void write(List<Object> messages) {
         unwritten.decrementAndGet();
         ByteBuf buffer = channel.alloc().buffer(messages.size() * 256);
         try {
             for (Object message : messages) {
-                if (message instanceof EncodedLine line) {
+                ServerMessage plain = message instanceof EncodedLine line ? line.message() : (ServerMessage) message;
+                if (plain instanceof AgentAddedMessage added && ModelLines.carriesData(added)) {
+                    ModelLines.Cut cut = ModelLines.cut(CODEC, added);
+                    outbox.add(buffer.writeBytes(cut.before()), false);
+                    outbox.add(shared.models().wire(added.agent().model().data()), true);
+                    buffer = channel.alloc().buffer(Math.max(256, cut.after().length));
+                    buffer.writeBytes(cut.after());
+                } else if (message instanceof EncodedLine line) {
                     buffer.writeBytes(line.bytes());
-                } else if (!FastLines.write((ServerMessage) message, buffer)) {
-                    buffer.writeBytes(CODEC.encodeLine((ServerMessage) message));
+                } else if (!FastLines.write(plain, buffer)) {
+                    buffer.writeBytes(CODEC.encodeLine(plain));
                 }
             }
         } catch (RuntimeException e) {
@@ -119,44 +132,29 @@ final class NettySession implements ClientSession {
             channel.close();
             return;
         }
-        channel.writeAndFlush(buffer, channel.voidPromise());
+        outbox.add(buffer, false);
+    }
+
+    /** Tells the simulation, once, that this client is gone. */
+    void end(String reason) {
+        if (ended.compareAndSet(false, true)) {
+            shared.inbox().disconnected(this, reason);
+        }
     }
 
     @Override
     public void close(ErrorMessage last) {
-        if (channel.isActive()) {
-            channel.writeAndFlush(last).addListener(ChannelFutureListener.CLOSE);
+        if (isOpen()) {
+            // After what the client has been sent already, in the order the simulation sent it.
+            flush();
+            shared.writes().submit(channel.eventLoop(),
+                    () -> channel.writeAndFlush(last).addListener(ChannelFutureListener.CLOSE));
         }
     }
 
     @Override
     public boolean isOpen() {
-        return channel.isActive();
-    }
-
-    /** Whether this client still keeps up with what it is sent; cuts it off when it does not. */
-    private boolean keepUp() {
-        if (!channel.isActive()) {
-            return false;
-        }
-        if (channel.isWritable()) {
-            unwritableSince = -1;
-            return true;
-        }
-        long now = System.nanoTime();
-        if (unwritableSince < 0) {
-            unwritableSince = now;
-        }
-        long queued = channel.bytesBeforeWritable() + channel.config().getWriteBufferHighWaterMark();
-        boolean tooLong = now - unwritableSince > limits.slowConsumerGrace().toNanos();
-        if (tooLong || queued > limits.maxPendingBytes()) {
-            log.warn("cutting off slow {} client #{}: {} bytes unread for {} ms", role.wireName(), id, queued,
-                    (now - unwritableSince) / 1_000_000);
-            // The client is not reading, so a last error would only queue behind the rest: just close.
-            channel.close();
-            return false;
-        }
-        return true;
+        return channel.isActive() && !outbox.isCut() && !ended.get();
     }
 
     @Override

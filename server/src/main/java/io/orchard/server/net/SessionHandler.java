@@ -1,45 +1,67 @@
 package io.orchard.server.net;
 
+import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.ChannelPipeline;
 import io.netty.channel.SimpleChannelInboundHandler;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.timeout.IdleStateEvent;
+import io.netty.handler.timeout.IdleStateHandler;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.RegisterMessage;
+import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.Inbox;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
-import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * The last stage of a connection: it holds the handshake, then hands every message to the
- * simulation's {@link Inbox}. One per channel (it holds the session).
+ * simulation's {@link Inbox}. Once a client is welcomed it drops the stage that waited for its
+ * {@code Hello}, and for a viewer, which only listens, the idle timeout. A registration's model is
+ * counted against the caps on models first ({@link ModelStore}) and handed on as the one copy the
+ * server keeps. One per channel (it holds the session and the connection's models).
  */
 final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
 
     private static final Logger log = LoggerFactory.getLogger(SessionHandler.class);
 
+    private final SessionContext shared;
     private final Inbox inbox;
-    private final AtomicLong sessionIds;
     private final byte[] token;
-    private final NetLimits limits;
-    private final TickWrites writes;
+    private final ConnectionModels models = new ConnectionModels();
+    private Channel channel;
+    private Outbox outbox;
     private NettySession session;
 
-    SessionHandler(Inbox inbox, AtomicLong sessionIds, String token, NetLimits limits, TickWrites writes) {
-        this.writes = writes;
-        this.inbox = inbox;
-        this.sessionIds = sessionIds;
-        this.token = token == null ? null : token.getBytes(StandardCharsets.UTF_8);
-        this.limits = limits;
+    SessionHandler(SessionContext shared) {
+        this.shared = shared;
+        this.inbox = shared.inbox();
+        this.token = shared.token() == null ? null : shared.token().getBytes(StandardCharsets.UTF_8);
+    }
+
+    /**
+     * Everything the server writes to the client goes through its outbox from the start, so that a
+     * client that never reads cannot pile up even the errors its bad lines earn before its Hello.
+     */
+    @Override
+    public void channelActive(ChannelHandlerContext ctx) {
+        channel = ctx.channel();
+        outbox = new Outbox(channel, this, shared.limits(), shared.budget(), () -> {
+            if (session != null) {
+                session.end("connection closed");
+            }
+        }, System::nanoTime);
+        channel.attr(Outbox.KEY).set(outbox);
+        ctx.fireChannelActive();
     }
 
     @Override
@@ -48,6 +70,9 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             if (message instanceof HelloMessage) {
                 ctx.writeAndFlush(new ErrorMessage(message.seq(), ErrorCode.INVALID_VALUE,
                         "Hello: the handshake is already done"));
+            } else if (message instanceof RegisterMessage register && session.role() == Role.AGENT
+                    && register.model() != null && register.model().data() != null) {
+                registerWithModel(ctx, register);
             } else {
                 inbox.received(session, message);
             }
@@ -68,11 +93,32 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                     ? "this server requires a token in Hello" : "wrong token");
             return;
         }
-        session = new NettySession(sessionIds.incrementAndGet(), hello.role(), hello.protocolVersion(),
-                ctx.channel(), limits, writes);
+        ChannelPipeline pipeline = ctx.pipeline();
+        if (pipeline.get(HelloDeadline.class) != null) {
+            pipeline.remove(HelloDeadline.class);
+        }
+        if (hello.role() == Role.VIEWER && pipeline.get(IdleStateHandler.class) != null) {
+            // A viewer only listens: silence is what it does, and what it fails to read is the outbox's care.
+            pipeline.remove(IdleStateHandler.class);
+        }
+        long id = shared.sessionIds().incrementAndGet();
+        session = new NettySession(id, hello.role(), hello.protocolVersion(), ctx.channel(), shared, outbox);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);
+    }
+
+    /** A registration carrying a model: the model is counted against the caps and handed on as the one copy kept. */
+    private void registerWithModel(ChannelHandlerContext ctx, RegisterMessage register) {
+        ModelStore.Admitted model = shared.models().admit(register.model(), models,
+                shared.limits().modelBytesPerConnection());
+        if (model.refusal() != null) {
+            ctx.writeAndFlush(new ErrorMessage(register.seq(), ErrorCode.INVALID_VALUE, model.refusal()));
+            return;
+        }
+        inbox.received(session, model.model() == register.model() ? register
+                : new RegisterMessage(register.seq(), register.name(), register.body(), model.model(),
+                        register.resumeToken()));
     }
 
     private boolean tokenMatches(String offered) {
@@ -87,19 +133,32 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
     @Override
     public void channelInactive(ChannelHandlerContext ctx) {
         if (session != null) {
-            inbox.disconnected(session, "connection closed");
+            session.end("connection closed");
         }
         ctx.fireChannelInactive();
+    }
+
+    @Override
+    public void channelWritabilityChanged(ChannelHandlerContext ctx) {
+        if (outbox != null) {
+            outbox.pump();
+        }
+        ctx.fireChannelWritabilityChanged();
     }
 
     @Override
     public void userEventTriggered(ChannelHandlerContext ctx, Object event) {
         if (event instanceof IdleStateEvent) {
             ctx.writeAndFlush(new ErrorMessage(0, ErrorCode.IDLE, "no message for "
-                    + limits.idleTimeout().toSeconds() + " s; closing")).addListener(ChannelFutureListener.CLOSE);
+                    + shared.limits().idleTimeout().toSeconds() + " s; closing")).addListener(ChannelFutureListener.CLOSE);
         } else {
             ctx.fireUserEventTriggered(event);
         }
+    }
+
+    @Override
+    public String toString() {
+        return session != null ? session.toString() : "client " + (channel == null ? "?" : channel.remoteAddress());
     }
 
     @Override

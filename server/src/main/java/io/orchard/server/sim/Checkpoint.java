@@ -50,6 +50,7 @@ public record Checkpoint(int format,
     /** The format this server writes and reads. */
     public static final int FORMAT = 2;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Checkpoint {
         if (format != FORMAT) {
             throw new IllegalArgumentException("checkpoint format " + format + " is not supported: this server reads "
@@ -94,6 +95,7 @@ public record Checkpoint(int format,
     public record SavedAgent(String name, Body body, @Nullable ModelSpec model, Vec3 position, double heading,
                              List<String> joints, List<String> timeSensors, String resumeToken) {
 
+        /** Checks the components; a bad value is refused with an exception that names it. */
         public SavedAgent {
             Checks.name(name, "name");
             Checks.present(body, "body");

@@ -69,6 +69,7 @@ public final class Simulation implements Inbox {
     private final CheckpointRequests checkpoints = new CheckpointRequests();
     private final Turns turns = new Turns();
 
+    /** A simulation of {@code world} with no placement of its own: agents are placed where the world finds room. */
     public Simulation(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
                       List<GameListener> listeners) {
         this(world, config, seed, serverVersion, recorder, listeners, (name, radius) -> null);

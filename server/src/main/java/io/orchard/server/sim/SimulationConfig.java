@@ -21,6 +21,7 @@ public record SimulationConfig(int tickRate, ClockMode clock, double timeLimit, 
     public static final SimulationConfig DEFAULT = new SimulationConfig(20, ClockMode.REALTIME, 300, 0,
             Duration.ofSeconds(2), 8, BodyLimits.DEFAULT);
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public SimulationConfig {
         if (tickRate < 1 || tickRate > 1000) {
             throw new IllegalArgumentException("tickRate must be 1 to 1000, was " + tickRate);

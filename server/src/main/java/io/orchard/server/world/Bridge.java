@@ -42,18 +42,22 @@ public final class Bridge {
         return shape;
     }
 
+    /** The bridge's id, as scenario files and viewers name it. */
     public String id() {
         return shape.id();
     }
 
+    /** Where the deck meets one bank. */
     public Point2 entryA() {
         return shape.entryA();
     }
 
+    /** Where the deck meets the other bank. */
     public Point2 entryB() {
         return shape.entryB();
     }
 
+    /** The deck's width, from railing to railing. */
     public double width() {
         return shape.width();
     }

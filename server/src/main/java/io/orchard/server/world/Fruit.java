@@ -17,6 +17,7 @@ import io.orchard.protocol.value.Vec3;
  */
 public record Fruit(String id, FruitKind kind, Vec3 position, @Nullable String support) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Fruit {
         Checks.id(id, "id");
         Checks.present(kind, "kind");

@@ -36,6 +36,7 @@ public record MoveResult(Obstruction obstruction, @Nullable String objectId, dou
         RIVER
     }
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public MoveResult {
         Checks.present(obstruction, "obstruction");
         Checks.finite(travel, "travel");

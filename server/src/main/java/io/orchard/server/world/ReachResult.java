@@ -11,6 +11,7 @@ import io.orchard.protocol.value.Checks;
  */
 public record ReachResult(boolean reachable, String reason) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ReachResult {
         Checks.present(reason, "reason");
     }

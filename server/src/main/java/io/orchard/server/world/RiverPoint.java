@@ -16,6 +16,7 @@ import io.orchard.protocol.value.Point2;
  */
 public record RiverPoint(Point2 point, double distance, double heading) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public RiverPoint {
         Checks.present(point, "point");
         Checks.nonNegative(distance, "distance");

@@ -21,8 +21,9 @@ import org.locationtech.jts.geom.Polygon;
  * Checks that the things of a well-formed scenario fit together, and makes the world if they do.
  * Every rule is listed, with its message, in {@code docs/scenarios.md}.
  *
- * <p>Two stages: first what the geometry needs (unique ids, things in the right list, outlines that
- * are valid polygons); then, on the world built from them, where things are (inside the world, not
+ * <p>Three stages: first that every number lies in a range the geometry can work with
+ * ({@link ScenarioNumbers}); then what the geometry needs (unique ids, things in the right list,
+ * outlines that are valid polygons); then, on the world built from them, where things are (inside the world, not
  * overlapping, the river crossing the world with bridges that span it, fruit where fruit can be).
  * Every problem of a stage is collected, so that an author fixes a file in one round.
  */
@@ -40,6 +41,8 @@ final class ScenarioCheck {
             throw new ScenarioException("no scenario given");
         }
         ScenarioCheck check = new ScenarioCheck(scenario);
+        check.problems.addAll(ScenarioNumbers.problems(scenario));
+        check.throwIfAny();
         check.ids();
         check.lists();
         check.outlines();

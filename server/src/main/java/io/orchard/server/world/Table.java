@@ -16,6 +16,7 @@ import io.orchard.protocol.value.Point2;
  */
 public record Table(String id, Point2 position, double radius, double height) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Table {
         Checks.id(id, "id");
         Checks.present(position, "position");

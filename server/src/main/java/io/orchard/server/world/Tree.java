@@ -31,6 +31,7 @@ public record Tree(String id, Point2 position, double crownRadius, double height
     /** The thickest trunk, in units. */
     public static final double MAX_TRUNK_RADIUS = 0.5;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Tree {
         Checks.id(id, "id");
         Checks.present(position, "position");

@@ -101,10 +101,12 @@ public final class World {
         return bounds;
     }
 
+    /** The trees, of the forest and the open land. */
     public List<Tree> trees() {
         return obstacles.trees;
     }
 
+    /** The tables. */
     public List<Table> tables() {
         return obstacles.tables;
     }
@@ -114,14 +116,17 @@ public final class World {
         return obstacleList;
     }
 
+    /** The castle. */
     public Castle castle() {
         return castle;
     }
 
+    /** The river. */
     public River river() {
         return river;
     }
 
+    /** The bridges over the river. */
     public List<Bridge> bridges() {
         return bridges;
     }

@@ -65,6 +65,8 @@ public final class WorldGenerator {
     private final WorldOptions options;
 
     /**
+     * A generator of worlds as {@code options} describe them.
+     *
      * @param random  where every random choice comes from; seed it to make the same world again
      * @param options what to make
      */

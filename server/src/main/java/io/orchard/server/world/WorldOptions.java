@@ -33,6 +33,7 @@ public record WorldOptions(double size, int trees, int tables, int fruit) {
     /** A world for benchmarks: 1,000 x 1,000 units with 10,000 objects (7,000 trees, 1,000 tables, 2,000 fruit). */
     public static final WorldOptions BENCHMARK = new WorldOptions(1000, 7000, 1000, 2000);
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public WorldOptions {
         Checks.finite(size, "size");
         if (size < MIN_SIZE || size > MAX_SIZE) {
@@ -54,18 +55,22 @@ public record WorldOptions(double size, int trees, int tables, int fruit) {
         }
     }
 
+    /** These options with a world {@code newSize} units square. */
     public WorldOptions withSize(double newSize) {
         return new WorldOptions(newSize, trees, tables, fruit);
     }
 
+    /** These options with {@code count} trees. */
     public WorldOptions withTrees(int count) {
         return new WorldOptions(size, count, tables, fruit);
     }
 
+    /** These options with {@code count} tables. */
     public WorldOptions withTables(int count) {
         return new WorldOptions(size, trees, count, fruit);
     }
 
+    /** These options with {@code count} pieces of fruit. */
     public WorldOptions withFruit(int count) {
         return new WorldOptions(size, trees, tables, count);
     }

@@ -37,7 +37,6 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * The server's message handling under fuzzed input, with two invariants checked after every
@@ -107,7 +106,7 @@ final class ServerUnderFuzz {
     private final Simulation real = simulation();
     private final Simulation shadow = simulation();
     private final Remembering inbox = new Remembering(real);
-    private final AtomicLong sessionIds = new AtomicLong();
+    private final SessionContext context = SessionContext.of(inbox, null, NetLimits.DEFAULT);
     private final EmbeddedChannel client = channel();
     private final Quiet shadowClient = new Quiet(1, Role.AGENT);
     private int steps;
@@ -139,7 +138,7 @@ final class ServerUnderFuzz {
     private EmbeddedChannel channel() {
         return new EmbeddedChannel(new LineBasedFrameDecoder(MessageCodec.MAX_LARGE_LINE_BYTES + 1, true, true),
                 new FloodGuard(1e9, 1e9, () -> 0L), new MessageDecoder(CODEC),
-                new SessionHandler(inbox, sessionIds, null, NetLimits.DEFAULT, new TickWrites()));
+                new SessionHandler(context));
     }
 
     private static void write(EmbeddedChannel channel, String line) {

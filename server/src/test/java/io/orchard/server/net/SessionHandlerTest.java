@@ -18,7 +18,6 @@ import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.Inbox;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -57,7 +56,7 @@ class SessionHandlerTest {
     private final ListeningInbox inbox = new ListeningInbox();
 
     private EmbeddedChannel channel(String token) {
-        return new EmbeddedChannel(new SessionHandler(inbox, new AtomicLong(), token, NetLimits.DEFAULT, new TickWrites()));
+        return new EmbeddedChannel(new SessionHandler(SessionContext.of(inbox, token, NetLimits.DEFAULT)));
     }
 
     private static HelloMessage hello(int version, String token) {
@@ -127,6 +126,21 @@ class SessionHandlerTest {
         channel.pipeline().fireUserEventTriggered(IdleStateEvent.FIRST_READER_IDLE_STATE_EVENT);
         assertThat(((ErrorMessage) channel.readOutbound()).code()).isEqualTo(ErrorCode.IDLE);
         assertThat(channel.isOpen()).isFalse();
+    }
+
+    @Test
+    void aWelcomedViewerLeavesTheIdleTimeoutBehindAndAnAgentKeepsIt() {
+        for (Role role : Role.values()) {
+            EmbeddedChannel channel = new EmbeddedChannel(
+                    new HelloDeadline(new HelloQueue(8), java.time.Duration.ofSeconds(5)),
+                    new io.netty.handler.timeout.IdleStateHandler(120, 0, 0),
+                    new SessionHandler(SessionContext.of(inbox, null, NetLimits.DEFAULT)));
+            channel.writeInbound(new HelloMessage(1, 1, role, "test", null));
+            assertThat(channel.pipeline().get(HelloDeadline.class)).as("the Hello came").isNull();
+            assertThat(channel.pipeline().get(io.netty.handler.timeout.IdleStateHandler.class) != null)
+                    .as("idle timeout for a " + role.wireName()).isEqualTo(role == Role.AGENT);
+            channel.close();
+        }
     }
 
     @Nested

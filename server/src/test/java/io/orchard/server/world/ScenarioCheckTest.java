@@ -3,6 +3,7 @@ package io.orchard.server.world;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.BridgeShape;
 import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.ObjectKind;
@@ -127,6 +128,46 @@ class ScenarioCheckTest {
         assertThatThrownBy(world::world)
                 .isInstanceOf(ScenarioException.class)
                 .hasMessage("2 problems: tree T1 overlaps tree T2; fruit F1 is in the river");
+    }
+
+    @Test
+    void aWorldOfPlusOrMinus1e308IsRefusedNamingTheFieldsBeforeAnyGeometryIsBuilt() {
+        SmallWorld world = SmallWorld.builder().bounds(new Bounds(-1e308, -1e308, 1e308, 1e308));
+
+        assertThatThrownBy(world::world)
+                .isInstanceOf(ScenarioException.class)
+                .hasMessage("4 problems: the bounds: bounds.minX must lie between -10000.0 and 10000.0, was -1.0E308; "
+                        + "the bounds: bounds.minZ must lie between -10000.0 and 10000.0, was -1.0E308; "
+                        + "the bounds: bounds.maxX must lie between -10000.0 and 10000.0, was 1.0E308; "
+                        + "the bounds: bounds.maxZ must lie between -10000.0 and 10000.0, was 1.0E308");
+    }
+
+    static Stream<Arguments> hugeNumbers() {
+        return Stream.of(
+                refused("the castle: castle.footprint[1].z must lie between -10000.0 and 10000.0, was 20000.0",
+                        w -> w.castle(10, 10, 10, 20, 20000, 20, 10)),
+                refused("the castle: castle.height must be at most 1000.0, was 1.0E300",
+                        w -> w.castle(1e300, 10, 10, 20, 10, 20, 20, 10, 20)),
+                refused("the river: river.outline[0].x must lie between -10000.0 and 10000.0, was -1.0E9",
+                        w -> w.river(-1e9, 60, 100, 60, 100, 70, 0, 70)),
+                refused("bridge B1: bridges[0].width must be at most 1000.0, was 5000.0",
+                        w -> w.bridges(new BridgeShape("B1", p(50, 57), p(50, 73), 5000))),
+                refused("bridge B1: bridges[0].entryB.x must lie between -10000.0 and 10000.0, was 1.0E200",
+                        w -> w.bridges(new BridgeShape("B1", p(50, 57), p(1e200, 73), 4))),
+                refused("tree T1: trees[0].position.x must lie between -10000.0 and 10000.0, was -1.0E308",
+                        w -> w.tree("T1", -1e308, 40, 2, 6)),
+                refused("tree T1: trees[0].radius must be at most 1000.0, was 1.0E308", w -> w.tree("T1", 40, 40, 1e308, 6)),
+                refused("table D1: tables[0].height must be at most 1000.0, was 1001.0", w -> w.table("D1", 40, 40, 1, 1001)),
+                refused("fruit F1: fruit[0].position.y must lie between -10000.0 and 10000.0, was 1.0E10",
+                        w -> w.fruit("F1", FruitKind.TOMATO, 40, 1e10, 40, null)));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("hugeNumbers")
+    void aNumberOutOfRangeIsRefusedNamingItsField(String message, UnaryOperator<SmallWorld> change) {
+        assertThatThrownBy(change.apply(SmallWorld.builder())::world)
+                .isInstanceOf(ScenarioException.class)
+                .hasMessage(message);
     }
 
     @Test

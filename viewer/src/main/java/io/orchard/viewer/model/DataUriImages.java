@@ -20,13 +20,13 @@ import javax.imageio.stream.MemoryCacheImageInputStream;
  * file that claims enormous dimensions (a decompression bomb) is never decoded. Decoding stays
  * in memory: no temporary files, no URLs.
  */
-final class DataUriImages {
+public final class DataUriImages {
 
     private DataUriImages() {
     }
 
     /** The bytes a {@code data:} URI carries, or null if the URI is not a base64 data URI. */
-    static byte[] bytes(String uri, String where) throws ModelException {
+    public static byte[] bytes(String uri, String where) throws ModelException {
         if (!isDataUri(uri)) {
             return null;
         }
@@ -49,12 +49,13 @@ final class DataUriImages {
         }
     }
 
-    static boolean isDataUri(String uri) {
+    /** Whether {@code uri} starts with {@code data:}, in any case. */
+    public static boolean isDataUri(String uri) {
         return uri.regionMatches(true, 0, "data:", 0, 5);
     }
 
     /** Width and height from the image header, without decoding the pixels. */
-    static int[] size(byte[] image, String where) throws ModelException {
+    public static int[] size(byte[] image, String where) throws ModelException {
         ImageReader reader = reader(image, where);
         try {
             return new int[] {reader.getWidth(0), reader.getHeight(0)};
@@ -67,7 +68,7 @@ final class DataUriImages {
     }
 
     /** Checks the size against {@code maxSize}, then decodes to a jME image, rows bottom-up. */
-    static Image decode(byte[] image, int maxSize, String where) throws ModelException {
+    public static Image decode(byte[] image, int maxSize, String where) throws ModelException {
         ImageReader reader = reader(image, where);
         try {
             int width = reader.getWidth(0);
@@ -83,7 +84,8 @@ final class DataUriImages {
         }
     }
 
-    static void checkSize(int width, int height, int maxSize, String where)
+    /** Refuses an image wider or taller than {@code maxSize} pixels, before its pixels are decoded. */
+    public static void checkSize(int width, int height, int maxSize, String where)
             throws ModelException {
         if (width > maxSize || height > maxSize) {
             throw new ModelException(Kind.TOO_LARGE, where + ": embedded image of " + width + "x"

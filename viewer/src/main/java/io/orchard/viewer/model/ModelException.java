@@ -8,7 +8,7 @@ package io.orchard.viewer.model;
  *
  * <p>The exception is checked on purpose: a viewer that forgets to handle it would let one bad
  * model stop the render thread. The usual reaction is to log {@link #getMessage()} and show
- * {@link AgentModels#placeholder} instead. The message names the problem, the node (type and DEF
+ * {@link BodyModels#placeholder} instead. The message names the problem, the node (type and DEF
  * name), the field and the offending value, and where known the line and column.
  */
 public final class ModelException extends Exception {
@@ -33,12 +33,14 @@ public final class ModelException extends Exception {
 
     private final Kind kind;
 
-    ModelException(Kind kind, String message) {
+    /** A problem of the given kind, with a message that says what and where. */
+    public ModelException(Kind kind, String message) {
         super(message);
         this.kind = kind;
     }
 
-    ModelException(Kind kind, String message, Throwable cause) {
+    /** A problem of the given kind caused by another exception, such as a parser's. */
+    public ModelException(Kind kind, String message, Throwable cause) {
         super(message, cause);
         this.kind = kind;
     }

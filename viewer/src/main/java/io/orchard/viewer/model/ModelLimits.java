@@ -25,6 +25,7 @@ public record ModelLimits(int maxInputBytes, int maxNodes, int maxDepth, int max
     /** The deepest nesting any limits may allow; deeper would risk the thread's stack. */
     public static final int DEPTH_CEILING = 256;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public ModelLimits {
         requirePositive("maxInputBytes", maxInputBytes);
         requirePositive("maxNodes", maxNodes);

@@ -32,7 +32,7 @@ import java.util.Optional;
  * The node types this loader builds, with their VRML97 fields and defaults. A node of any other
  * type is still parsed (so its DEF names and nested nodes are known) but not built.
  */
-final class NodeSchema {
+public final class NodeSchema {
 
     private static final Map<String, NodeType> TYPES = new HashMap<>();
 
@@ -183,12 +183,12 @@ final class NodeSchema {
     }
 
     /** The type of that name, or empty for node types this loader does not build. */
-    static Optional<NodeType> find(String typeName) {
+    public static Optional<NodeType> find(String typeName) {
         return Optional.ofNullable(TYPES.get(typeName));
     }
 
     /** The field a child element of an unknown type fills in the XML encoding. */
-    static String defaultContainerField(String typeName) {
+    public static String defaultContainerField(String typeName) {
         NodeType type = TYPES.get(typeName);
         if (type != null) {
             return type.containerField();

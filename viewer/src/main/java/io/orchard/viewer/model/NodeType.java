@@ -7,13 +7,16 @@ import java.util.Optional;
  * A node type this loader knows: its fields and, for the XML encoding, the field a child element
  * of this type fills when it names none ({@code containerField}).
  */
-record NodeType(String name, NodeKind kind, String containerField, Map<String, FieldDef> fields) {
+public record NodeType(String name, NodeKind kind, String containerField,
+                       Map<String, FieldDef> fields) {
 
-    NodeType {
+    /** Copies the fields, so the type cannot change afterwards. */
+    public NodeType {
         fields = Map.copyOf(fields);
     }
 
-    Optional<FieldDef> field(String fieldName) {
+    /** The field named {@code fieldName}, or empty if the type has none of that name. */
+    public Optional<FieldDef> field(String fieldName) {
         return Optional.ofNullable(fields.get(fieldName));
     }
 

@@ -8,19 +8,20 @@ import java.util.function.Supplier;
  * input is stopped at the first node, level or number over the limit rather than after it has
  * been read in full.
  */
-final class ParseBudget {
+public final class ParseBudget {
 
     private final ModelLimits limits;
     private int nodes;
     private int depth;
     private long values;
 
-    ParseBudget(ModelLimits limits) {
+    /** An empty budget, with nothing counted yet, for one parse against {@code limits}. */
+    public ParseBudget(ModelLimits limits) {
         this.limits = limits;
     }
 
     /** Refuses input larger than the limit before any parsing starts. */
-    static void checkSize(byte[] bytes, ModelLimits limits, String formatName)
+    public static void checkSize(byte[] bytes, ModelLimits limits, String formatName)
             throws ModelException {
         if (bytes.length > limits.maxInputBytes()) {
             throw new ModelException(Kind.TOO_LARGE, formatName + " model of " + bytes.length
@@ -32,7 +33,7 @@ final class ParseBudget {
     }
 
     /** Counts {@code count} more nodes (a {@code USE} counts the weight of what it repeats). */
-    void addNodes(int count, String where) throws ModelException {
+    public void addNodes(int count, String where) throws ModelException {
         nodes += count;
         if (nodes > limits.maxNodes() || nodes < 0) {
             throw new ModelException(Kind.TOO_LARGE, where + ": the model has more than "
@@ -41,7 +42,7 @@ final class ParseBudget {
     }
 
     /** Enters one level of nesting. */
-    void enter(String where) throws ModelException {
+    public void enter(String where) throws ModelException {
         depth++;
         if (depth > limits.maxDepth()) {
             throw new ModelException(Kind.TOO_LARGE, where + ": nesting deeper than "
@@ -53,7 +54,7 @@ final class ParseBudget {
      * Completes a node read at the current depth and checks that, with the trees its
      * {@code USE}s repeat, it does not reach deeper than the limit either.
      */
-    void complete(SceneNode node, String where) throws ModelException {
+    public void complete(SceneNode node, String where) throws ModelException {
         node.complete();
         checkHeight(node, depth, where);
     }
@@ -62,7 +63,7 @@ final class ParseBudget {
      * Checks that a node placed at nesting level {@code level} (1 for a top-level node) keeps
      * its whole tree within the depth limit: a {@code USE} may repeat a deep tree deep down.
      */
-    void checkHeight(SceneNode node, int level, String where) throws ModelException {
+    public void checkHeight(SceneNode node, int level, String where) throws ModelException {
         if (level - 1 + node.height() > limits.maxDepth()) {
             throw new ModelException(Kind.TOO_LARGE, where + ": " + node.label()
                     + " nests deeper than " + limits.maxDepth() + " levels (counting the nodes"
@@ -70,11 +71,13 @@ final class ParseBudget {
         }
     }
 
-    void exit() {
+    /** Leaves one level of nesting. */
+    public void exit() {
         depth--;
     }
 
-    int depth() {
+    /** How many levels of nesting are open now. */
+    public int depth() {
         return depth;
     }
 
@@ -82,7 +85,7 @@ final class ParseBudget {
      * Counts one more number in an array field; {@code where} is called only to word the error,
      * so the common case builds no message.
      */
-    void addValue(Supplier<String> where) throws ModelException {
+    public void addValue(Supplier<String> where) throws ModelException {
         values++;
         if (values > limits.maxArrayValues()) {
             throw new ModelException(Kind.TOO_LARGE, where.get() + ": more than "

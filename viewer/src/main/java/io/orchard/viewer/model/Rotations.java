@@ -3,7 +3,7 @@ package io.orchard.viewer.model;
 import com.jme3.math.Quaternion;
 
 /** Conversions between VRML's axis-angle rotations and jME quaternions, and their slerp. */
-final class Rotations {
+public final class Rotations {
 
     private static final double EPSILON = 1e-9;
 
@@ -11,12 +11,13 @@ final class Rotations {
     }
 
     /** The rotation stored at {@code values[offset..offset+3]}; a zero axis means none. */
-    static Quaternion fromAxisAngle(float[] values, int offset) {
+    public static Quaternion fromAxisAngle(float[] values, int offset) {
         return fromAxisAngle(values[offset], values[offset + 1], values[offset + 2],
                 values[offset + 3]);
     }
 
-    static Quaternion fromAxisAngle(float x, float y, float z, float angle) {
+    /** The rotation by {@code angle} radians about the axis {@code (x, y, z)}; a zero axis means none. */
+    public static Quaternion fromAxisAngle(float x, float y, float z, float angle) {
         double length = Math.sqrt((double) x * x + (double) y * y + (double) z * z);
         if (length < EPSILON) {
             return new Quaternion();
@@ -28,7 +29,7 @@ final class Rotations {
     }
 
     /** The axis-angle form {@code {x, y, z, angle}}, with a unit axis and an angle in [0, 2pi]. */
-    static float[] toAxisAngle(Quaternion q) {
+    public static float[] toAxisAngle(Quaternion q) {
         double x = q.getX();
         double y = q.getY();
         double z = q.getZ();
@@ -51,7 +52,7 @@ final class Rotations {
     }
 
     /** Spherical interpolation from {@code a} to {@code b} along the shorter arc. */
-    static Quaternion slerp(Quaternion a, Quaternion b, float t) {
+    public static Quaternion slerp(Quaternion a, Quaternion b, float t) {
         double ax = a.getX();
         double ay = a.getY();
         double az = a.getZ();

@@ -14,11 +14,11 @@ import org.slf4j.LoggerFactory;
  * names, and the ROUTEs with both ends resolved and type-checked. The scene builder and the event
  * graph start from here.
  */
-final class SceneDescription {
+public final class SceneDescription {
 
     /** A ROUTE as written. */
-    record Route(String fromNode, String fromField, String toNode, String toField,
-                 String location) {
+    public record Route(String fromNode, String fromField, String toNode, String toField,
+                        String location) {
 
         @Override
         public String toString() {
@@ -28,7 +28,8 @@ final class SceneDescription {
     }
 
     /** A ROUTE whose ends exist: {@code fromField} can send, {@code toField} can receive. */
-    record ResolvedRoute(SceneNode from, FieldDef fromField, SceneNode to, FieldDef toField) {
+    public record ResolvedRoute(SceneNode from, FieldDef fromField, SceneNode to,
+                                FieldDef toField) {
     }
 
     private final List<SceneNode> roots;
@@ -42,16 +43,18 @@ final class SceneDescription {
         this.routes = List.copyOf(routes);
     }
 
-    List<SceneNode> roots() {
+    /** The top-level nodes, in file order. */
+    public List<SceneNode> roots() {
         return roots;
     }
 
     /** DEF name to node; when a name is defined twice, the later node. */
-    Map<String, SceneNode> defs() {
+    public Map<String, SceneNode> defs() {
         return defs;
     }
 
-    List<ResolvedRoute> routes() {
+    /** The ROUTEs whose nodes this viewer animates, resolved and type-checked, in file order. */
+    public List<ResolvedRoute> routes() {
         return routes;
     }
 
@@ -59,7 +62,7 @@ final class SceneDescription {
      * Collects DEF names, USEs and ROUTEs while a parser runs. A DEF name becomes usable once its
      * node is complete, so a node can never {@code USE} itself or an ancestor.
      */
-    static final class Collector {
+    public static final class Collector {
 
         private static final Logger LOG = LoggerFactory.getLogger(SceneDescription.class);
 
@@ -67,16 +70,18 @@ final class SceneDescription {
         private final List<Route> routes = new ArrayList<>();
         private final ParseBudget budget;
 
-        Collector(ParseBudget budget) {
+        /** A collector that counts each {@code USE} against {@code budget}. */
+        public Collector(ParseBudget budget) {
             this.budget = budget;
         }
 
-        void define(String name, SceneNode node) {
+        /** Makes {@code name} usable by later {@code USE}s and ROUTEs; a repeated name replaces the earlier node. */
+        public void define(String name, SceneNode node) {
             defs.put(name, node);
         }
 
         /** The node a {@code USE} names, counted in full against the node limit. */
-        SceneNode use(String name, String where) throws ModelException {
+        public SceneNode use(String name, String where) throws ModelException {
             SceneNode node = defs.get(name);
             if (node == null) {
                 throw new ModelException(Kind.UNKNOWN_NAME, where + ": USE '" + name
@@ -87,11 +92,13 @@ final class SceneDescription {
             return node;
         }
 
-        void route(Route route) {
+        /** Keeps a ROUTE to resolve in {@link #finish}, once every DEF name is known. */
+        public void route(Route route) {
             routes.add(route);
         }
 
-        SceneDescription finish(List<SceneNode> roots) throws ModelException {
+        /** Resolves and type-checks the ROUTEs and returns the description; ROUTEs to unknown types are skipped. */
+        public SceneDescription finish(List<SceneNode> roots) throws ModelException {
             List<ResolvedRoute> resolved = new ArrayList<>();
             for (Route route : routes) {
                 SceneNode from = endpoint(route, route.fromNode());

@@ -13,7 +13,7 @@ import java.util.Optional;
  *
  * <p>Arrays returned by the getters are shared with the description and must not be modified.
  */
-final class SceneNode {
+public final class SceneNode {
 
     private final String typeName;
     private final NodeType type;
@@ -23,39 +23,45 @@ final class SceneNode {
     private int weight = 1;
     private int height = 1;
 
-    SceneNode(String typeName, String location) {
+    /** A node of type {@code typeName} read at {@code location}, with no fields set yet. */
+    public SceneNode(String typeName, String location) {
         this.typeName = typeName;
         this.type = NodeSchema.find(typeName).orElse(null);
         this.location = location;
     }
 
-    String typeName() {
+    /** The type name as written, such as {@code "Transform"}. */
+    public String typeName() {
         return typeName;
     }
 
     /** The schema type, or empty for a node type this loader parses but does not build. */
-    Optional<NodeType> type() {
+    public Optional<NodeType> type() {
         return Optional.ofNullable(type);
     }
 
-    boolean isKnown() {
+    /** Whether the loader knows the node's type, that is, can build it. */
+    public boolean isKnown() {
         return type != null;
     }
 
-    boolean is(String name) {
+    /** Whether the node is of type {@code name}. */
+    public boolean is(String name) {
         return typeName.equals(name);
     }
 
-    Optional<String> defName() {
+    /** The DEF name, or empty if the node has none. */
+    public Optional<String> defName() {
         return Optional.ofNullable(defName);
     }
 
-    void setDefName(String name) {
+    /** Sets the DEF name. */
+    public void setDefName(String name) {
         this.defName = name;
     }
 
     /** Where the node starts in its file, such as {@code "line 4:3"}. */
-    String location() {
+    public String location() {
         return location;
     }
 
@@ -76,7 +82,7 @@ final class SceneNode {
      * Computes {@link #weight()} and {@link #height()} from the node's children, counting every
      * {@code USE} in full; called once, when the node's last child has been read.
      */
-    void complete() {
+    public void complete() {
         int totalWeight = 1;
         int maxHeight = 0;
         for (SceneNode child : childNodes()) {
@@ -87,16 +93,18 @@ final class SceneNode {
         this.height = maxHeight + 1;
     }
 
-    void set(String field, Object value) {
+    /** Sets a field to a value in the representation {@link FieldType} describes. */
+    public void set(String field, Object value) {
         fields.put(field, value);
     }
 
-    boolean has(String field) {
+    /** Whether the file set the field (a default does not count). */
+    public boolean has(String field) {
         return fields.containsKey(field);
     }
 
     /** The nodes held in node-valued fields, in file order (unknown types' fields included). */
-    List<SceneNode> childNodes() {
+    public List<SceneNode> childNodes() {
         List<SceneNode> result = new ArrayList<>();
         for (Object value : fields.values()) {
             if (value instanceof SceneNode node) {
@@ -112,7 +120,8 @@ final class SceneNode {
         return result;
     }
 
-    Object get(String field) {
+    /** The field's value, or its default if the file did not set it; null for an unset field of an unknown type. */
+    public Object get(String field) {
         Object value = fields.get(field);
         if (value != null || fields.containsKey(field)) {
             return value;
@@ -127,32 +136,39 @@ final class SceneNode {
         return def.defaultValue();
     }
 
-    boolean bool(String field) {
+    /** The value of an SFBool field. */
+    public boolean bool(String field) {
         return (Boolean) get(field);
     }
 
-    int integer(String field) {
+    /** The value of an SFInt32 field. */
+    public int integer(String field) {
         return (Integer) get(field);
     }
 
-    double number(String field) {
+    /** The value of an SFFloat or SFTime field. */
+    public double number(String field) {
         return (Double) get(field);
     }
 
-    float[] floats(String field) {
+    /** The numbers of a vector, colour or rotation field, or of a numeric MF field but MFInt32, flat. */
+    public float[] floats(String field) {
         return (float[]) get(field);
     }
 
-    int[] ints(String field) {
+    /** The numbers of an MFInt32 field. */
+    public int[] ints(String field) {
         return (int[]) get(field);
     }
 
+    /** The values of an MFString field. */
     @SuppressWarnings("unchecked")
-    List<String> strings(String field) {
+    public List<String> strings(String field) {
         return (List<String>) get(field);
     }
 
-    SceneNode node(String field) {
+    /** The node in an SFNode field, or null if it holds none. */
+    public SceneNode node(String field) {
         return (SceneNode) get(field);
     }
 
@@ -160,19 +176,20 @@ final class SceneNode {
      * The node in a node field if it is of type {@code typeName}, else null: a field that holds
      * a node type this loader does not build counts as empty.
      */
-    SceneNode node(String field, String typeName) {
+    public SceneNode node(String field, String typeName) {
         SceneNode node = node(field);
         return node != null && node.is(typeName) ? node : null;
     }
 
+    /** The nodes in an MFNode field; empty if the field is unset and the type unknown. */
     @SuppressWarnings("unchecked")
-    List<SceneNode> nodes(String field) {
+    public List<SceneNode> nodes(String field) {
         Object value = get(field);
         return value == null ? List.of() : (List<SceneNode>) value;
     }
 
     /** How messages name this node: {@code Transform 'LeftKnee'} or {@code Shape (line 7:5)}. */
-    String label() {
+    public String label() {
         return defName != null ? typeName + " '" + defName + "'" : typeName + " (" + location + ")";
     }
 

@@ -3,9 +3,8 @@ package io.orchard.viewer.replay;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.ProtocolException;
 import io.orchard.protocol.message.ServerMessage;
-import java.io.BufferedReader;
+import io.orchard.protocol.value.Nullable;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -42,17 +41,23 @@ public final class Recording {
     private final Path file;
     private final List<Entry> entries;
     private final int skipped;
+    private final String firstProblem;
 
-    private Recording(Path file, List<Entry> entries, int skipped) {
+    private Recording(Path file, List<Entry> entries, int skipped, String firstProblem) {
         this.file = file;
         this.entries = List.copyOf(entries);
         this.skipped = skipped;
+        this.firstProblem = firstProblem;
     }
 
     /**
-     * Reads a recording.
+     * Reads a recording. Lines that cannot be read (not UTF-8, not JSON, not a message) are
+     * skipped, counted and logged with the first of them, so that a recording cut short by a crash
+     * still replays.
      *
-     * @throws IOException when the file cannot be read, or holds no world snapshot to start from
+     * @throws IOException when the file cannot be read, or holds no world snapshot to start from;
+     *                     the message names the file and, when lines were skipped, the first of
+     *                     them and what is wrong with it
      */
     public static Recording read(Path file) throws IOException {
         MessageCodec codec = new MessageCodec();
@@ -60,18 +65,21 @@ public final class Recording {
         List<Entry> beforeSnapshot = new ArrayList<>();
         String snapshotSession = null;
         int skipped = 0;
-        int firstSkipped = 0;
         String firstProblem = null;
         int lineNumber = 0;
-        try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
-            String line;
-            while ((line = in.readLine()) != null) {
-                lineNumber++;
-                if (line.isBlank()) {
-                    continue;
-                }
+        try (Utf8Lines in = new Utf8Lines(Files.newInputStream(file))) {
+            while (true) {
+                String problem;
                 try {
-                    RecordLine record = RecordLine.parse(line);
+                    String line = in.next();
+                    if (line == null) {
+                        break;
+                    }
+                    lineNumber = in.number();
+                    if (line.isBlank()) {
+                        continue;
+                    }
+                    RecordLine record = parse(line);
                     if (!"out".equals(record.get("dir"))) {
                         continue;
                     }
@@ -97,30 +105,50 @@ public final class Recording {
                     } else {
                         entries.add(entry);
                     }
-                } catch (IllegalArgumentException | ProtocolException e) {
-                    if (skipped++ == 0) {
-                        firstSkipped = lineNumber;
-                        firstProblem = e.getMessage();
-                    }
+                    continue;
+                } catch (IllegalArgumentException e) {
+                    problem = e.getMessage();
+                } catch (ProtocolException e) {
+                    problem = "holds no message this viewer reads (" + e.getMessage() + ")";
+                }
+                lineNumber = in.number();
+                if (skipped++ == 0) {
+                    firstProblem = "line " + lineNumber + " " + problem;
                 }
             }
         } catch (NoSuchFileException e) {
             throw new IOException("no recording at " + file + " (no such file)", e);
+        } catch (IOException e) {
+            throw new IOException("cannot read the recording " + file + ": "
+                    + (Files.isDirectory(file) ? "it is a folder, not a file" : e.getMessage()), e);
+        }
+        if (snapshotSession == null && skipped > 0) {
+            throw new IOException("cannot replay " + file + ": " + firstProblem + "; " + skipped + " of its "
+                    + lineNumber + " lines could not be read, and no WorldSnapshot line was found to start"
+                    + " from");
         }
         if (snapshotSession == null) {
             throw new IOException("recording " + file + " holds no WorldSnapshot line (read " + lineNumber
                     + " lines): it was recorded with no viewer connected; connect a viewer while the server records");
         }
         if (skipped > 0) {
-            LOG.warn("recording {}: skipped {} line(s) that are not messages, the first at line {}: {}", file, skipped,
-                    firstSkipped, firstProblem);
+            LOG.warn("recording {}: skipped {} line(s) that could not be read; the first: {}", file, skipped,
+                    firstProblem);
         }
-        return new Recording(file, entries, skipped);
+        return new Recording(file, entries, skipped, firstProblem);
+    }
+
+    private static RecordLine parse(String line) {
+        try {
+            return RecordLine.parse(line);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("is not a JSON object (" + e.getMessage() + ")", e);
+        }
     }
 
     private static ServerMessage decode(MessageCodec codec, String json) {
         if (json == null) {
-            throw new IllegalArgumentException("line has no \"msg\" field");
+            throw new IllegalArgumentException("has no \"msg\" field");
         }
         return codec.decodeServer(json);
     }
@@ -153,5 +181,13 @@ public final class Recording {
     /** How many lines could not be read as messages and were skipped. */
     public int skippedLines() {
         return skipped;
+    }
+
+    /**
+     * The first line skipped and what is wrong with it ("line 2 is not UTF-8 text (a malformed byte
+     * sequence at byte 1 of 9)"); null when none was.
+     */
+    public @Nullable String firstSkipped() {
+        return firstProblem;
     }
 }

@@ -23,6 +23,7 @@ public final class Castles {
 
     private final Palette palette;
 
+    /** Builds castles in the colours of {@code palette}. */
     public Castles(Palette palette) {
         this.palette = palette;
     }

@@ -17,6 +17,7 @@ public final class Fruits {
 
     private final Palette palette;
 
+    /** Builds fruit in the colours of {@code palette}. */
     public Fruits(Palette palette) {
         this.palette = palette;
     }

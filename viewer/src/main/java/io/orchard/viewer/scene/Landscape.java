@@ -26,6 +26,7 @@ public final class Landscape {
 
     private final Palette palette;
 
+    /** Builds the ground, the river and the bridges in the colours of {@code palette}. */
     public Landscape(Palette palette) {
         this.palette = palette;
     }

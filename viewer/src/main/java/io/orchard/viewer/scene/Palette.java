@@ -48,6 +48,7 @@ public final class Palette {
     private final Map<ColorRGBA, Material> lit = new HashMap<>();
     private final Map<ColorRGBA, Material> flat = new HashMap<>();
 
+    /** The colours as materials made with {@code assets}. */
     public Palette(AssetManager assets) {
         this.assets = assets;
     }

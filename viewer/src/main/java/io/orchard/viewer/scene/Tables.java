@@ -12,6 +12,7 @@ public final class Tables {
 
     private final Palette palette;
 
+    /** Builds tables in the colours of {@code palette}. */
     public Tables(Palette palette) {
         this.palette = palette;
     }

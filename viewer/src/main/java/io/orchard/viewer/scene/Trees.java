@@ -18,6 +18,7 @@ public final class Trees {
 
     private final Palette palette;
 
+    /** Builds trees in the colours of {@code palette}. */
     public Trees(Palette palette) {
         this.palette = palette;
     }

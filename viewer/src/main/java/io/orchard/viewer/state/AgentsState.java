@@ -13,16 +13,16 @@ import com.jme3.scene.Node;
 import com.jme3.scene.control.BillboardControl;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
-import io.orchard.viewer.agent.AgentModelLoader;
-import io.orchard.viewer.model.AgentModel;
-import io.orchard.viewer.model.AgentModels;
+import io.orchard.viewer.agent.BodyModelLoader;
+import io.orchard.viewer.model.BodyModel;
+import io.orchard.viewer.model.BodyModels;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.scene.Meshes;
 import io.orchard.viewer.scene.Palette;
 import io.orchard.viewer.world.AgentView;
 import io.orchard.viewer.world.LogLine;
-import io.orchard.viewer.world.Move;
+import io.orchard.viewer.world.Motion;
 import io.orchard.viewer.world.RunningAnimation;
 import io.orchard.viewer.world.WorldMirror;
 import java.util.ArrayList;
@@ -40,9 +40,9 @@ import org.slf4j.LoggerFactory;
 /**
  * The agents on screen: one model per agent, loaded on a worker thread from the model it
  * registered with (or a placeholder, with the reason logged), then driven as the paper's applet
- * drove the VRML browser through the EAI: a walk becomes {@link AgentModel#moveTo}, a turn
- * {@link AgentModel#setRotation}, a joint {@link AgentModel#setJointRotation}, an animation
- * {@link AgentModel#startAnimation} or {@link AgentModel#stopAnimation}; every frame each model is
+ * drove the VRML browser through the EAI: a walk becomes {@link BodyModel#moveTo}, a turn
+ * {@link BodyModel#setRotation}, a joint {@link BodyModel#setJointRotation}, an animation
+ * {@link BodyModel#startAnimation} or {@link BodyModel#stopAnimation}; every frame each model is
  * advanced to the clock's time.
  *
  * <p>A model that arrives after its agent has already walked, turned and started animations is
@@ -63,7 +63,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     private final Map<String, Shown> shown = new LinkedHashMap<>();
     private final Set<String> warned = new HashSet<>();
     private ExecutorService loaders;
-    private AgentModelLoader loader;
+    private BodyModelLoader loader;
     private BitmapFont font;
     private Palette palette;
     private int pending;
@@ -74,7 +74,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         final AgentView agent;
         final Node anchor;
         final Geometry shade;
-        AgentModel model;
+        BodyModel model;
         Node label;
 
         Shown(AgentView agent, Palette palette) {
@@ -88,6 +88,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         }
     }
 
+    /** The agents of {@code mirror}, moved by {@code clock}, with models loaded within {@code limits}. */
     public AgentsState(WorldMirror mirror, SimClock clock, ModelLimits limits) {
         this.mirror = mirror;
         this.clock = clock;
@@ -96,7 +97,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
 
     @Override
     protected void initialize(Application app) {
-        loader = new AgentModelLoader(app.getAssetManager(), limits);
+        loader = new BodyModelLoader(app.getAssetManager(), limits);
         font = app.getAssetManager().loadFont("Interface/Fonts/Default.fnt");
         palette = new Palette(app.getAssetManager());
         // Two loaders: a crowd of a hundred models loads in half the time on two cores.
@@ -119,19 +120,19 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         pending++;
         Application app = getApplication();
         loaders.execute(() -> {
-            AgentModelLoader.Loaded loaded;
+            BodyModelLoader.Loaded loaded;
             try {
                 loaded = loader.load(agent.name(), agent.body().height(), agent.model().orElse(null));
             } catch (RuntimeException | StackOverflowError | OutOfMemoryError e) {
                 // Never expected from the loader; still no reason to lose the agent or the viewer.
-                loaded = new AgentModelLoader.Loaded(null, "loading the model failed: " + e);
+                loaded = new BodyModelLoader.Loaded(null, "loading the model failed: " + e);
             }
-            AgentModelLoader.Loaded result = loaded;
+            BodyModelLoader.Loaded result = loaded;
             app.enqueue(() -> attach(entry, result));
         });
     }
 
-    private void attach(Shown entry, AgentModelLoader.Loaded loaded) {
+    private void attach(Shown entry, BodyModelLoader.Loaded loaded) {
         pending--;
         if (shown.get(entry.agent.name()) != entry) {
             return; // the agent left (or came back) while its model loaded
@@ -143,7 +144,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
             mirror.note(LogLine.Kind.PROBLEM, entry.agent.name() + "'s model cannot be shown: " + loaded.problem());
         }
         entry.model = loaded.model() != null ? loaded.model()
-                : AgentModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
+                : BodyModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
         entry.anchor.attachChild(entry.model.root());
         if (!entry.model.isPlaceholder()) {
             entry.label = label(entry.agent.name());
@@ -155,18 +156,18 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     /** Poses a model just loaded as the agent stands now, replaying its animations from their starts. */
     private void pose(Shown entry) {
         AgentView agent = entry.agent;
-        AgentModel model = entry.model;
+        BodyModel model = entry.model;
         List<RunningAnimation> running = new ArrayList<>(agent.runningAnimations());
         running.sort(Comparator.comparingDouble(RunningAnimation::startTime));
         for (RunningAnimation animation : running) {
             model.update(animation.startTime());
             drive(agent, "animation " + animation.name(), () -> model.startAnimation(animation.name(), animation.loop()));
         }
-        Move move = agent.move();
+        Motion motion = agent.motion();
         Vec3 at = agent.positionAt(clock.now());
         drive(agent, "move", () -> {
-            if (move != null) {
-                model.moveTo(vector(move.from()), vector(move.to()), move.startTime(), move.duration());
+            if (motion != null) {
+                model.moveTo(vector(motion.from()), vector(motion.to()), motion.startTime(), motion.duration());
             } else {
                 model.moveTo(vector(at), vector(at), model.time(), 0);
             }
@@ -191,9 +192,9 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     }
 
     @Override
-    public void agentMoved(AgentView agent, Move move) {
+    public void agentMoved(AgentView agent, Motion motion) {
         withModel(agent, model -> drive(agent, "move",
-                () -> model.moveTo(vector(move.from()), vector(move.to()), move.startTime(), move.duration())));
+                () -> model.moveTo(vector(motion.from()), vector(motion.to()), motion.startTime(), motion.duration())));
     }
 
     @Override
@@ -259,7 +260,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
                 entry.label.removeFromParent();
                 entry.label = null;
             }
-            entry.model = AgentModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
+            entry.model = BodyModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
             entry.anchor.attachChild(entry.model.root());
             pose(entry);
         }
@@ -271,7 +272,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     }
 
     /** The model shown for an agent, once loaded. */
-    public AgentModel model(String name) {
+    public BodyModel model(String name) {
         Shown entry = shown.get(name);
         return entry == null ? null : entry.model;
     }
@@ -299,11 +300,11 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         return node;
     }
 
-    private void rotate(AgentView agent, AgentModel model, Rotation rotation) {
+    private void rotate(AgentView agent, BodyModel model, Rotation rotation) {
         drive(agent, "rotation", () -> model.setRotation(vector(rotation.axis()), (float) rotation.angle()));
     }
 
-    private void withModel(AgentView agent, java.util.function.Consumer<AgentModel> change) {
+    private void withModel(AgentView agent, java.util.function.Consumer<BodyModel> change) {
         Shown entry = shown.get(agent.name());
         if (entry != null && entry.model != null) {
             change.accept(entry.model);

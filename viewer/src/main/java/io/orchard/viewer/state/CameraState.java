@@ -44,6 +44,7 @@ public final class CameraState extends BaseAppState implements ActionListener, A
     public static final float FIELD_OF_VIEW = 45f;
     /** The near and far clipping distances. */
     public static final float NEAR = 0.3f;
+    /** The far clipping distance. */
     public static final float FAR = 5000f;
 
     private static final String[] MAPPINGS = {"drag", "pan", "left", "right", "up", "down", "zoomIn", "zoomOut",
@@ -70,6 +71,8 @@ public final class CameraState extends BaseAppState implements ActionListener, A
     private boolean framed;
 
     /**
+     * The camera over the world of {@code mirror}, following the selected agent at the time of {@code clock}.
+     *
      * @param interactive   whether the mouse and keys move the camera (windowed)
      * @param fixedLocation where a headless camera stands, or null
      * @param fixedTarget   what a headless camera looks at, or null

@@ -53,6 +53,8 @@ public final class HudState extends BaseAppState {
     private boolean helpShown = true;
 
     /**
+     * The panels showing the world of {@code mirror} at the time of {@code clock}.
+     *
      * @param source   says where the messages come from (server or recording), each frame
      * @param showKeys whether to show the keys (windowed)
      */

@@ -33,7 +33,11 @@ public final class InstructionState extends BaseAppState implements RawInputList
     private boolean typing;
     private float blink;
 
-    /** @param live the connection to send through, or null when replaying (nothing can be sent) */
+    /**
+     * The instruction field, closed.
+     *
+     * @param live the connection to send through, or null when replaying (nothing can be sent)
+     */
     public InstructionState(LiveState live) {
         this.live = live;
     }

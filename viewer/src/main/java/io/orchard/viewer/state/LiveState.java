@@ -46,6 +46,10 @@ public final class LiveState extends BaseAppState implements SimClock {
     private String status = "connecting";
     private boolean closed;
 
+    /**
+     * A connection to the server at {@code host}:{@code port} (with its {@code token}, or null when it needs none)
+     * that keeps {@code mirror} up to date and reports its end to {@code control}.
+     */
     public LiveState(String host, int port, String token, WorldMirror mirror, RunControl control) {
         this.host = host;
         this.port = port;

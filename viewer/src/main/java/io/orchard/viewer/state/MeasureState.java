@@ -22,7 +22,12 @@ public final class MeasureState extends BaseAppState {
     private long frames;
     private boolean done;
 
-    /** @param setting what is measured, for the report (size, shadows) */
+    /**
+     * Counts the frames of {@code seconds} of wall clock once the world of {@code mirror} is shown, then
+     * reports the rate and ends the run through {@code control}.
+     *
+     * @param setting what is measured, for the report (size, shadows)
+     */
     public MeasureState(double seconds, WorldMirror mirror, RunControl control, String setting) {
         this.seconds = seconds;
         this.mirror = mirror;

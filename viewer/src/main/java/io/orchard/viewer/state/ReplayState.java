@@ -17,6 +17,7 @@ public final class ReplayState extends BaseAppState implements SimClock {
 
     /** The slowest and fastest speeds {@link #setSpeed} accepts. */
     public static final double MIN_SPEED = 1.0 / 16;
+    /** The fastest speed {@link #setSpeed} accepts. */
     public static final double MAX_SPEED = 64;
 
     private final Recording recording;
@@ -29,6 +30,8 @@ public final class ReplayState extends BaseAppState implements SimClock {
     private double now;
 
     /**
+     * Plays {@code recording} into {@code mirror} at {@code speed}.
+     *
      * @param stepped true when only {@link #advanceTo} moves the clock (headless screenshots)
      */
     public ReplayState(Recording recording, WorldMirror mirror, double speed, boolean stepped) {
@@ -97,14 +100,17 @@ public final class ReplayState extends BaseAppState implements SimClock {
         return recording;
     }
 
+    /** Whether the replay is paused. */
     public boolean isPaused() {
         return paused;
     }
 
+    /** Pauses the replay, or lets it go on. */
     public void setPaused(boolean paused) {
         this.paused = paused;
     }
 
+    /** The speed of the replay: simulated seconds per second of wall clock. */
     public double speed() {
         return speed;
     }

@@ -50,7 +50,12 @@ public final class ScreenshotState extends BaseAppState {
     private int width;
     private int height;
 
-    /** @param replay the replay whose clock this state moves, or null for a live server */
+    /**
+     * Takes the shots of {@code plan} of the world of {@code mirror} at the times of {@code clock}, and ends
+     * the run through {@code control} after the last.
+     *
+     * @param replay the replay whose clock this state moves, or null for a live server
+     */
     public ScreenshotState(ShotPlan plan, WorldMirror mirror, SimClock clock, ReplayState replay, RunControl control) {
         this.plan = plan;
         this.mirror = mirror;

@@ -19,9 +19,9 @@ import io.orchard.protocol.value.Vec3;
 import io.orchard.viewer.scene.Meshes;
 import io.orchard.viewer.scene.Palette;
 import io.orchard.viewer.world.AgentView;
-import io.orchard.viewer.world.Perception;
 import io.orchard.viewer.world.Picking;
 import io.orchard.viewer.world.Sighting;
+import io.orchard.viewer.world.ViewCone;
 import io.orchard.viewer.world.WorldMirror;
 import java.util.ArrayList;
 import java.util.List;
@@ -29,7 +29,7 @@ import java.util.List;
 /**
  * The selected agent and its point of view: a ring at its feet, its perception cone drawn on the
  * ground from its body's {@code Sight} (range and field of view, turned with its heading), and a
- * line from its eyes to everything it perceives right now, worked out by {@link Perception} from
+ * line from its eyes to everything it perceives right now, worked out by {@link ViewCone} from
  * what the viewer knows.
  */
 public final class SelectionState extends BaseAppState implements WorldMirror.Listener {
@@ -53,6 +53,7 @@ public final class SelectionState extends BaseAppState implements WorldMirror.Li
     private Sight coneSight;
     private Sighting sighting = Sighting.NOTHING;
 
+    /** The selection among the agents of {@code mirror}, drawn at the time of {@code clock}. */
     public SelectionState(WorldMirror mirror, SimClock clock) {
         this.mirror = mirror;
         this.clock = clock;
@@ -141,7 +142,7 @@ public final class SelectionState extends BaseAppState implements WorldMirror.Li
         cone.setLocalTranslation((float) at.x(), 0.12f, (float) at.z());
         cone.setLocalRotation(new com.jme3.math.Quaternion().fromAngleAxis((float) agent.heading(), Vector3f.UNIT_Y));
         ring.setLocalTranslation((float) at.x(), 0.1f, (float) at.z());
-        sighting = Perception.of(mirror, agent, now);
+        sighting = ViewCone.of(mirror, agent, now);
         Vector3f eye = new Vector3f((float) at.x(), (float) (at.y() + agent.body().height() * 0.9), (float) at.z());
         List<Vector3f> fruitEnds = new ArrayList<>();
         for (FruitState fruit : sighting.fruit()) {

@@ -12,6 +12,7 @@ import java.util.Objects;
  */
 public record Shot(double time, Path file) {
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Shot {
         if (!(time >= 0) || Double.isInfinite(time)) {
             throw new IllegalArgumentException("a screenshot's time must be zero or more seconds, was " + time);

@@ -55,6 +55,7 @@ public final class WorldSceneState extends BaseAppState implements WorldMirror.L
     private DirectionalLightShadowRenderer shadowRenderer;
     private Node root;
 
+    /** The world of {@code mirror}'s snapshots, with shadows when {@code shadows} is set. */
     public WorldSceneState(WorldMirror mirror, boolean shadows) {
         this.mirror = mirror;
         this.shadows = shadows;

@@ -21,7 +21,7 @@ public final class AgentView {
 
     private final AgentState added;
     private Vec3 position;
-    private Move move;
+    private Motion motion;
     private Rotation rotation;
     private double heading;
     private final Map<String, Rotation> joints = new LinkedHashMap<>();
@@ -61,12 +61,12 @@ public final class AgentView {
 
     /** Where it stands at simulated time {@code time}, following its last move. */
     public Vec3 positionAt(double time) {
-        return move == null ? position : move.at(time);
+        return motion == null ? position : motion.at(time);
     }
 
     /** Its last move, or null when it has not moved since the viewer heard of it. */
-    public Move move() {
-        return move;
+    public Motion motion() {
+        return motion;
     }
 
     /** Its orientation as last sent: about the up axis for a heading. */
@@ -92,9 +92,9 @@ public final class AgentView {
         return List.copyOf(animations.values());
     }
 
-    void moved(Move next) {
+    void moved(Motion next) {
         this.position = next.from();
-        this.move = next;
+        this.motion = next;
     }
 
     void rotated(Rotation next) {

@@ -15,6 +15,7 @@ import java.util.List;
  */
 public record Sighting(List<Obstacle> objects, List<AgentView> agents, List<FruitState> fruit) {
 
+    /** Keeps its own unmodifiable copy of the lists. */
     public Sighting {
         objects = List.copyOf(objects);
         agents = List.copyOf(agents);

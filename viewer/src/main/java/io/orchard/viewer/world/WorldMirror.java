@@ -63,7 +63,7 @@ public final class WorldMirror {
         default void agentRemoved(AgentView agent) {}
 
         /** An agent started a walk. */
-        default void agentMoved(AgentView agent, Move move) {}
+        default void agentMoved(AgentView agent, Motion motion) {}
 
         /** An agent turned. */
         default void agentRotated(AgentView agent, Rotation rotation, double time) {}
@@ -164,7 +164,7 @@ public final class WorldMirror {
     /** The news of an agent the viewer knows: it walks, turns, moves a joint or plays an animation. */
     private void changeAgent(AgentView agent, AgentMessage message) {
         if (message instanceof AgentMovedMessage moved) {
-            Move move = new Move(moved.from(), moved.to(), moved.startTime(), moved.duration());
+            Motion move = new Motion(moved.from(), moved.to(), moved.startTime(), moved.duration());
             agent.moved(move);
             listeners.forEach(l -> l.agentMoved(agent, move));
         } else if (message instanceof AgentRotatedMessage rotated) {

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.within;
 import com.jme3.math.Vector3f;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
+import io.orchard.protocol.value.ModelFormat;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
@@ -77,7 +78,7 @@ class Figure5Test {
     @MethodSource("figure5")
     void figure5LoadsWithTheAgentsRequiredNodes(ModelFormat format, byte[] bytes)
             throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
 
         assertThat(guppy.hasNode("Guppy")).isTrue();
         assertThat(guppy.hasNode("GuppyMover")).isTrue();
@@ -94,7 +95,7 @@ class Figure5Test {
     @MethodSource("figure5")
     void moveToInterpolatesGuppyThroughMoverAndTimeSensor(ModelFormat format, byte[] bytes)
             throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
         Node body = (Node) TestModels.find(guppy.root(), "Guppy");
         guppy.update(0);
 
@@ -120,7 +121,7 @@ class Figure5Test {
     @MethodSource("figure5")
     void secondMoveContinuesFromWhereTheFirstEnded(ModelFormat format, byte[] bytes)
             throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
         Node body = (Node) TestModels.find(guppy.root(), "Guppy");
         guppy.moveTo(new Vector3f(0, 0, 0), new Vector3f(10, 0, 10), 0, 1);
         guppy.update(0);
@@ -136,7 +137,7 @@ class Figure5Test {
     @MethodSource("figure5")
     void moveWhoseEndHasPassedByTheNextFrameStillArrives(ModelFormat format, byte[] bytes)
             throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
         Node body = (Node) TestModels.find(guppy.root(), "Guppy");
         guppy.update(0);
 
@@ -150,7 +151,7 @@ class Figure5Test {
     @MethodSource("figure5")
     void zeroDurationMoveJumpsAtItsStartTime(ModelFormat format, byte[] bytes)
             throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
         Node body = (Node) TestModels.find(guppy.root(), "Guppy");
 
         guppy.moveTo(new Vector3f(0, 0, 0), new Vector3f(7, 0, 7), 2, 0);
@@ -164,7 +165,7 @@ class Figure5Test {
     @ParameterizedTest(name = "{0}")
     @MethodSource("figure5")
     void bodyIsBuiltFromThePrimitives(ModelFormat format, byte[] bytes) throws ModelException {
-        AgentModel guppy = TestModels.load("Guppy", format, bytes);
+        BodyModel guppy = TestModels.load("Guppy", format, bytes);
 
         Geometry cylinder = (Geometry) TestModels.find(guppy.root(), "Cylinder");
         assertThat(cylinder.getMesh().getBound().getCenter()).isEqualTo(Vector3f.ZERO);

@@ -3,6 +3,7 @@ package io.orchard.viewer.model;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException.Kind;
 import java.io.ByteArrayOutputStream;
 import java.nio.ByteBuffer;
@@ -82,7 +83,7 @@ class HostileInputTest {
                         TestModels.x3d(Figure5Test.FIGURE_5_X3D)), Kind.MALFORMED, "XML"),
                 refused("glTF truncated", ModelFormat.GLTF, truncated(
                         TestModels.resource("walker.gltf")), Kind.MALFORMED, "truncated"),
-                refused("GLB truncated", ModelFormat.GLB, truncated(GltfLoadingTest.walkerGlb()),
+                refused("GLB truncated", ModelFormat.GLB, truncated(TestModels.walkerGlb()),
                         Kind.MALFORMED, "GLB"),
                 refused("VRML97 without its header", ModelFormat.VRML97,
                         "Group {}".getBytes(StandardCharsets.UTF_8), Kind.MALFORMED,
@@ -209,7 +210,7 @@ class HostileInputTest {
                 refused("glTF 100,000-deep JSON", ModelFormat.GLTF,
                         ("{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + "[".repeat(DEEP)
                                 + "]".repeat(DEEP) + "}").getBytes(StandardCharsets.UTF_8),
-                        Kind.TOO_LARGE, "nesting deeper than 64"),
+                        Kind.TOO_LARGE, "nesting depth (65) exceeds the maximum allowed (64)"),
                 refused("glTF node that is its own grandchild", ModelFormat.GLTF,
                         ("{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [{\"children\": [1]},"
                                 + " {\"children\": [0]}]}").getBytes(StandardCharsets.UTF_8),
@@ -251,12 +252,12 @@ class HostileInputTest {
     void smallerLimitsAreEnforced() {
         ModelLimits tight = ModelLimits.DEFAULTS.withMaxNodes(3).withMaxDepth(2);
 
-        assertThatThrownBy(() -> AgentModels.load("Guppy", ModelFormat.VRML97,
+        assertThatThrownBy(() -> BodyModels.load("Guppy", ModelFormat.VRML97,
                 TestModels.vrml("Group { children [ Group { children Group {} } ] }"),
                 TestModels.ASSETS, tight))
                 .isInstanceOf(ModelException.class)
                 .hasMessageContaining("deeper than 2 levels");
-        assertThatThrownBy(() -> AgentModels.load("Guppy", ModelFormat.VRML97,
+        assertThatThrownBy(() -> BodyModels.load("Guppy", ModelFormat.VRML97,
                 TestModels.vrml("Group {} Group {} Group {} Group {}"), TestModels.ASSETS, tight))
                 .isInstanceOf(ModelException.class)
                 .hasMessageContaining("more than 3 nodes");
@@ -331,7 +332,7 @@ class HostileInputTest {
 
     /** The walker GLB with one more chunk whose header claims 1.5 GB that are not there. */
     private static byte[] glbWithHugeChunk() {
-        byte[] glb = GltfLoadingTest.walkerGlb();
+        byte[] glb = TestModels.walkerGlb();
         ByteBuffer bigger = ByteBuffer.allocate(glb.length + 8).order(ByteOrder.LITTLE_ENDIAN);
         bigger.put(glb).putInt(1_500_000_000).putInt(0x12345678);
         bigger.putInt(8, bigger.capacity());

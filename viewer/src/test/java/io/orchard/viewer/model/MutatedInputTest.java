@@ -2,6 +2,7 @@ package io.orchard.viewer.model;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.value.ModelFormat;
 import java.util.Arrays;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
@@ -28,7 +29,7 @@ class MutatedInputTest {
                 Arguments.of(ModelFormat.VRML97, TestModels.vrml(Figure5Test.FIGURE_5_VRML)),
                 Arguments.of(ModelFormat.X3D, TestModels.x3d(Figure5Test.FIGURE_5_X3D)),
                 Arguments.of(ModelFormat.GLTF, TestModels.resource("walker.gltf")),
-                Arguments.of(ModelFormat.GLB, GltfLoadingTest.walkerGlb()))
+                Arguments.of(ModelFormat.GLB, TestModels.walkerGlb()))
                 .flatMap(a -> IntStream.range(0, MUTANTS).mapToObj(seed -> Arguments.of(
                         a.get()[0], seed, mutate((byte[]) a.get()[1], seed))));
     }
@@ -37,7 +38,7 @@ class MutatedInputTest {
     @MethodSource("mutants")
     void mutatedModelLoadsOrIsRefusedCleanly(ModelFormat format, int seed, byte[] bytes) {
         try {
-            AgentModel model = TestModels.load("Guppy", format, bytes);
+            BodyModel model = TestModels.load("Guppy", format, bytes);
             model.update(0);
             model.update(1);
         } catch (ModelException e) {

@@ -74,7 +74,48 @@ class RecordingTest {
         Recording recording = Recording.read(damaged);
 
         assertThat(recording.skippedLines()).isEqualTo(2);
+        assertThat(recording.firstSkipped()).isEqualTo("line 4 is not a JSON object (expected '{' at column 1 but found"
+                + " 't')");
         assertThat(recording.entries()).hasSameSizeAs(Recording.read(recorded).entries());
+    }
+
+    @Test
+    void aLineThatIsNotUtf8IsSkippedNamingItsLineAndByteAndTheRestReplays() throws IOException {
+        List<byte[]> lines = new ArrayList<>(Files.readAllLines(recorded).stream()
+                .map(line -> line.getBytes(StandardCharsets.UTF_8)).toList());
+        lines.add(3, new byte[] {'{', '"', 't', (byte) 0xc3, '"', '}'}); // a two-byte sequence cut short
+        Path damaged = dir.resolve("not-utf8.ndjson");
+        try (var out = Files.newOutputStream(damaged)) {
+            for (byte[] line : lines) {
+                out.write(line);
+                out.write('\n');
+            }
+        }
+
+        Recording recording = Recording.read(damaged);
+
+        assertThat(recording.skippedLines()).isEqualTo(1);
+        assertThat(recording.firstSkipped()).isEqualTo("line 4 is not UTF-8 text (a malformed byte sequence at byte 4"
+                + " of 6)");
+        assertThat(recording.entries()).hasSameSizeAs(Recording.read(recorded).entries());
+    }
+
+    @Test
+    void aFileOfSomethingElseIsRefusedNamingItsFirstBadLine() throws IOException {
+        Path notes = Files.writeString(dir.resolve("notes.txt"), "not json at all\nnor this\n");
+
+        assertThatThrownBy(() -> Recording.read(notes))
+                .isInstanceOf(IOException.class)
+                .hasMessage("cannot replay " + notes + ": line 1 is not a JSON object (expected '{' at column 1 but found"
+                        + " 'n'); 2 of its 2 lines could not be read, and no WorldSnapshot line was found to start"
+                        + " from");
+    }
+
+    @Test
+    void aFolderIsNotARecording() {
+        assertThatThrownBy(() -> Recording.read(dir))
+                .isInstanceOf(IOException.class)
+                .hasMessage("cannot read the recording " + dir + ": it is a folder, not a file");
     }
 
     @Test

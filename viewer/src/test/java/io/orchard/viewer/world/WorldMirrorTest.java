@@ -81,7 +81,7 @@ class WorldMirrorTest {
         }
 
         @Override
-        public void agentMoved(AgentView agent, Move move) {
+        public void agentMoved(AgentView agent, Motion motion) {
             events.add("moved " + agent.name());
         }
 

@@ -35,6 +35,7 @@ public record Scenario(int format,
     /** The format this server reads and writes. */
     public static final int FORMAT = 1;
 
+    /** Checks the components; a bad value is refused with an exception that names it. */
     public Scenario {
         if (format != FORMAT) {
             throw new ScenarioException("scenario format " + format + " is not supported: this server reads format "

@@ -109,6 +109,7 @@ class ScenarioFileTest {
             `"kind": "banana"`                       | `"kind": "pear"`                         | example.json: fruit F2: unknown value 'pear'; expected one of: banana, coconut, tomato (at fruit[1].kind
             `"kind": "tree", "position": { "x": 5`   | `"kind": "bush", "position": { "x": 5`   | example.json: tree T1: unknown value 'bush'; expected one of: table, tree
             `"radius": 0.8`                          | `"radius": "big"`                        | example.json: table D1: expected a number, found the text "big" (at tables[0].radius
+            `"id": "T1"`                             | `"id": 7`                                | example.json: tree trees[0]: Cannot coerce Integer value (7) to
             `"format": 1,`                           | `"format": 2,`                           | example.json: the scenario: scenario format 2 is not supported: this server reads format 1
             `"format": 1,`                           | `"format": 1, "format": 1,`              | example.json: the scenario: Duplicate Object property "format"
             `"height": 8`                            | `"height": 8,`                           | example.json: the castle: Unexpected character ('}'

@@ -1,0 +1,110 @@
+package io.orchard.agents;
+
+import io.orchard.agents.behaviour.Forager;
+import io.orchard.agents.behaviour.Motor;
+import io.orchard.agents.behaviour.PathPlanner;
+import io.orchard.agents.errand.Errands;
+import io.orchard.agents.language.Goal;
+import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.Interpretation;
+import java.util.List;
+import java.util.function.Consumer;
+import java.util.random.RandomGenerator;
+
+/**
+ * The agent's defaults, each made on first use once the agent is in the world: one path planner,
+ * whose map of the ground is kept up to date once for everything that plans; the autonomy
+ * ({@link Forager}); and the instructions, read by an {@link InstructionInterpreter} and pursued
+ * by the {@link Errands}. The harvesters of the forager and the errands play the body's grasp
+ * animation with each grasp.
+ */
+final class Behaviours {
+
+    private static final double GRASP_SECONDS = 1.5;
+
+    private final String agent;
+    private final Situation situation;
+    private final Motor motor;
+    private final RandomGenerator random;
+    private PathPlanner planner;
+    private Forager forager;
+    private Errands errands;
+    private InstructionInterpreter interpreter;
+
+    Behaviours(String agent, Situation situation, Motor motor, RandomGenerator random) {
+        this.agent = agent;
+        this.situation = situation;
+        this.motor = motor;
+        this.random = random;
+    }
+
+    /** The default interpreter of instructions, knowing the agent's name. */
+    InstructionInterpreter interpreter() {
+        if (interpreter == null) {
+            interpreter = new InstructionInterpreter(List.of(agent));
+        }
+        return interpreter;
+    }
+
+    PathPlanner planner() {
+        if (planner == null) {
+            planner = new PathPlanner(situation.memory());
+        }
+        return planner;
+    }
+
+    Forager forager() {
+        if (forager == null) {
+            forager = new Forager(situation.memory(), motor, planner(), random);
+            String graspAnimation = situation.plan().graspAnimation();
+            if (graspAnimation != null) {
+                forager.harvester().gesture(fruit -> motor.play(graspAnimation, GRASP_SECONDS));
+            }
+        }
+        return forager;
+    }
+
+    Errands errands() {
+        if (errands == null) {
+            errands = new Errands(situation.memory(), motor, planner());
+            String graspAnimation = situation.plan().graspAnimation();
+            if (graspAnimation != null) {
+                errands.harvester().gesture(fruit -> motor.play(graspAnimation, GRASP_SECONDS));
+            }
+        }
+        return errands;
+    }
+
+    /** One tick of the instructed goal, if there is one; the autonomy rests while it has the agent. */
+    boolean pursueInstruction() {
+        boolean held = situation.inWorld() && errands().step();
+        if (held && forager != null) {
+            forager.pause();
+        }
+        return held;
+    }
+
+    /**
+     * What the agent does with an instruction it heard, as {@link AgentController#onInstruction}
+     * describes it: a goal it understood goes to {@code onGoal}.
+     */
+    void heard(String text, Interpretation heard, Consumer<Goal> onGoal) {
+        if (!heard.isFor(agent)) {
+            motor.say("That was for " + heard.addressee().orElseThrow() + ", not for me.");
+            return;
+        }
+        if (heard instanceof Interpretation.Understood understood) {
+            onGoal.accept(understood.goal());
+        } else if (heard instanceof Interpretation.NotUnderstood notUnderstood) {
+            if (!errands().answer(text)) {
+                motor.say(errands().asking() ? notUnderstood.answer() + " " + errands().question()
+                        : notUnderstood.answer());
+            }
+        }
+    }
+
+    /** Whether an instructed goal has the agent. */
+    boolean instructed() {
+        return errands != null && errands.busy();
+    }
+}
