@@ -142,6 +142,7 @@ public final class GameFixture {
                 byte[] notX3d = "<X3D><Scene><Transform DEF='Broken'>".getBytes(StandardCharsets.UTF_8);
                 ModelSpec broken = ModelSpec.of(ModelFormat.X3D, notX3d);
                 request(agent, seq -> new RegisterMessage(seq, "Broken", WALKER_BODY, broken));
+                agent.send(seq -> new EndTurnMessage(seq, 0)); // the setup turn: the game starts when it is over
                 Map<Long, List<LongFunction<ClientMessage>>> script = new HashMap<>();
                 at(script, 1, seq -> new SetRotationMessage(seq, "Walker", Rotation.heading(0)));
                 at(script, 1, seq -> new MoveMessage(seq, "Walker", WALKER_START, WALKER_GRASP_SPOT));
@@ -200,6 +201,7 @@ public final class GameFixture {
                     String sensor = name + (bunny ? "TSHop" : "TSWalk");
                     request(client, seq -> new RegisterTimeSensorMessage(seq, name, sensor));
                     request(client, seq -> new StartAnimationMessage(seq, name, sensor, true));
+                    client.send(seq -> new EndTurnMessage(seq, 0)); // its setup turn
                 }
                 Random random = new Random(SEED);
                 play(clients.get(0), inbox, tick -> {

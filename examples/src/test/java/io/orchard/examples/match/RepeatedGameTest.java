@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.agents.AgentController;
 import io.orchard.agents.zoo.Species;
+import io.orchard.examples.Orchard;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Role;
@@ -103,6 +104,51 @@ class RepeatedGameTest {
     @Test
     void theFiveAgentsPlayTheSameGameWhateverOrderAndTimingTheyConnectIn() throws Exception {
         threeGamesGiveOneRecording(20);
+    }
+
+    @Test
+    void theFiveAgentsPlayTheSameGameInOneJvmAndEachInAJvmOfItsOwn() throws Exception {
+        double seconds = 10;
+        byte[] together = Files.readAllBytes(play(3, Arrays.asList(Species.values()), seconds, false));
+        byte[] apart = Files.readAllBytes(playInProcesses(4, seconds));
+
+        assertThat(new String(together, StandardCharsets.UTF_8)).as("no turn was missed")
+                .doesNotContain("\"dir\":\"missed\"").contains("\"type\":\"GameOver\"");
+        assertThat(apart).as("the recording of the agents in five JVMs, byte for byte").isEqualTo(together);
+    }
+
+    /** Plays one game of {@code seconds} with each agent run by {@code orchard agent} in a JVM of its own. */
+    private Path playInProcesses(int run, double seconds) throws Exception {
+        Path recording = dir.resolve("game-" + run + ".ndjson");
+        List<Process> processes = new ArrayList<>();
+        try (WorldServer server = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP)
+                .timeLimit(seconds).waitFor(Species.values().length).lockstepDeadline(Duration.ofSeconds(20))
+                .record(recording).start()) {
+            for (Species species : Species.values()) {
+                List<String> command = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                        "-cp", System.getProperty("java.class.path"), Orchard.class.getName(), "agent",
+                        "--type", species.name(), "--port", String.valueOf(server.port()));
+                processes.add(new ProcessBuilder(command).redirectErrorStream(true)
+                        .redirectOutput(dir.resolve(species.name() + "-" + run + ".log").toFile()).start());
+            }
+            try {
+                server.gameOver().get(5, TimeUnit.MINUTES);
+            } catch (java.util.concurrent.TimeoutException e) {
+                StringBuilder logs = new StringBuilder();
+                for (Species species : Species.values()) {
+                    logs.append(species).append(":\n")
+                            .append(Files.readString(dir.resolve(species.name() + "-" + run + ".log")));
+                }
+                throw new AssertionError("the game did not end within 5 minutes; the agents said:\n" + logs, e);
+            }
+            for (Process process : processes) {
+                assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the agent's JVM exits after the game").isTrue();
+                assertThat(process.exitValue()).as("its exit status").isZero();
+            }
+        } finally {
+            processes.forEach(Process::destroyForcibly);
+        }
+        return recording;
     }
 
     /** The whole length of a game: {@code -Dorchard.full=true} (a few minutes). */

@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
@@ -39,7 +40,7 @@ class DocumentedTournamentTest {
 
     /** The documented command's tournament, cut to {@code games} games. */
     private List<Played> play(Matcher command, int games) throws Exception {
-        Tournament tournament = new Tournament(games, Lineup.parse(command.group(2)),
+        Tournament tournament = new Tournament(games, Lineup.parse(command.group(2), Map.of()),
                 Long.parseLong(command.group(3)), Double.parseDouble(command.group(4)), Duration.ofSeconds(10), dir);
         return tournament.play(new ProgressBar(new PrintStream(OutputStream.nullOutputStream()), false, games));
     }
@@ -58,7 +59,7 @@ class DocumentedTournamentTest {
     void theFirstGamesOfTheDocumentedTournamentPlayAsItsTableSays() throws Exception {
         String doc = doc();
         Matcher command = command(doc);
-        List<String> names = Lineup.parse(command.group(2)).names();
+        List<String> names = Lineup.parse(command.group(2), Map.of()).names();
         int header = doc.indexOf(ResultTables.gameHeader(names));
         assertThat(header).as("the games' table, as results.md heads it").isNotNegative();
 
@@ -76,7 +77,7 @@ class DocumentedTournamentTest {
     void theWholeDocumentedTournamentPlaysAsItsTablesSay() throws Exception {
         String doc = doc();
         Matcher command = command(doc);
-        Lineup lineup = Lineup.parse(command.group(2));
+        Lineup lineup = Lineup.parse(command.group(2), Map.of());
 
         List<Played> played = play(command, Integer.parseInt(command.group(1)));
 

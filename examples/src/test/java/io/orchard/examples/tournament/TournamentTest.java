@@ -56,8 +56,8 @@ class TournamentTest {
         for (int run = 0; run < 2; run++) {
             ByteArrayOutputStream bytes = new ByteArrayOutputStream();
             PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
-            assertThat(new TournamentCommand().run(List.of("--games", "2", "--seed-from", "8", "--time-limit", "30",
-                    "--out", dirs[run].toString()), out, out)).isZero();
+            assertThat(Orchard.run(new String[] {"tournament", "--games", "2", "--seed-from", "8",
+                    "--time-limit", "30", "--out", dirs[run].toString()}, out, out)).isZero();
             printed[run] = bytes.toString(StandardCharsets.UTF_8);
         }
 

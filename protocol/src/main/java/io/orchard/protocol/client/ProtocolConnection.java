@@ -110,13 +110,17 @@ public final class ProtocolConnection implements AutoCloseable {
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
                                              Listener listener) throws IOException {
         Objects.requireNonNull(listener, "listener");
+        // Made before connecting: the server's handshake deadline runs from the connection, and a
+        // cold JVM's first codec and first encoding can take seconds on a busy machine.
+        MessageCodec codec = new MessageCodec();
+        byte[] hello = codec.encodeLine(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
         Socket socket = new Socket();
         try {
             socket.setTcpNoDelay(true);
             open(socket, host, port);
-            ProtocolConnection connection = new ProtocolConnection(socket, new MessageCodec(), listener);
+            ProtocolConnection connection = new ProtocolConnection(socket, codec, listener);
             connection.readerThread.start();
-            connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
+            connection.writeNow(hello);
             connection.awaitWelcome();
             return connection;
         } catch (IOException | RuntimeException e) {
@@ -206,7 +210,10 @@ public final class ProtocolConnection implements AutoCloseable {
         if (closed.get()) {
             throw new IOException("connection is closed");
         }
-        byte[] line = codec.encodeLine(message);
+        writeNow(codec.encodeLine(message));
+    }
+
+    private void writeNow(byte[] line) throws IOException {
         synchronized (out) {
             out.write(line);
             out.flush();
