@@ -33,6 +33,7 @@ public record MissedTurn(long tick, List<String> agents, Kind kind) {
         }
     }
 
+    /** Checks the components: a tick of 0 or more, a kind; the agents are copied. */
     public MissedTurn {
         if (tick < 0) {
             throw new IllegalArgumentException("tick must not be negative, was " + tick);
