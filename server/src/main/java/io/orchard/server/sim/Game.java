@@ -5,6 +5,7 @@ import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.message.GameStartedMessage;
 import io.orchard.protocol.value.Outcome;
+import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
 import io.orchard.server.world.World;
@@ -22,7 +23,8 @@ final class Game {
     private final Scoreboard scores;
     private final Outbox outbox;
     private final List<GameListener> listeners;
-    private Phase phase = Phase.WAITING;
+    /** Read by the network threads for their welcomes. */
+    private volatile Phase phase = Phase.WAITING;
     private int fruitAtStart;
     /** Whether a restored game continues by itself once every waiting agent is back. */
     private boolean continueWhenAllBack;
@@ -57,8 +59,23 @@ final class Game {
         }
         phase = Phase.RUNNING;
         fruitAtStart = world.fruitCount();
-        outbox.broadcast(new GameStartedMessage(outbox.tick(), seed, fruitAtStart, config.timeLimit()), Audience.ALL);
+        // The world's seed would give the world away to an agent: only viewers hear it.
+        GameStartedMessage started = new GameStartedMessage(outbox.tick(), seed, fruitAtStart, config.timeLimit());
+        outbox.broadcast(started, Audience.VIEWERS);
+        outbox.broadcast(started.withoutSeed(), Audience.AGENTS);
         listeners.forEach(l -> l.gameStarted(seed, fruitAtStart, config.timeLimit()));
+    }
+
+    /**
+     * Tells a client that connected after the start what it missed: the {@code GameStarted} of this
+     * game, the seed for viewers only. Nothing while the game waits (it will hear the start) or is over.
+     */
+    void joinedLate(ClientSession session) {
+        if (phase == Phase.RUNNING || phase == Phase.PAUSED) {
+            // A game's first tick is 0, wherever it is now.
+            GameStartedMessage started = new GameStartedMessage(0, seed, fruitAtStart, config.timeLimit());
+            outbox.send(session, session.role() == Role.VIEWER ? started : started.withoutSeed());
+        }
     }
 
     /** A new agent entered, and {@code present} are in the world: the game starts when enough came. */
