@@ -217,7 +217,8 @@ public final class MessageCodec {
 
     /**
      * The top-level {@code "seq"} of a line that failed, for its error to echo: an integer from 0 to
-     * 2<sup>63</sup>&minus;1 read before anything else went wrong; 0 when there is none.
+     * 2<sup>63</sup>&minus;1 found before the line stops being JSON (the reader passes over a
+     * byte-order mark); 0 when there is none.
      */
     private long seqOf(byte[] utf8, int length) {
         try (JsonParser parser = reader.createParser(utf8, 0, length)) {

@@ -34,7 +34,7 @@ public final class ProtocolException extends RuntimeException {
 
     /**
      * The {@code seq} of the bad line, for the error to echo: a top-level {@code "seq"} that is an
-     * integer from 0 to 2<sup>63</sup>&minus;1, read before anything else went wrong; 0 when there is none.
+     * integer from 0 to 2<sup>63</sup>&minus;1, found before the line stops being JSON; 0 when there is none.
      */
     public long seq() {
         return seq;

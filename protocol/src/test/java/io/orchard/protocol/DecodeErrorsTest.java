@@ -112,6 +112,7 @@ class DecodeErrorsTest {
                 .isInstanceOf(ProtocolException.class)
                 .hasMessage("a line must hold one JSON object, it starts with a byte-order mark (bytes EF BB BF),"
                         + " which a line must not have")
+                .satisfies(e -> assertThat(((ProtocolException) e).seq()).as("read past the mark").isEqualTo(3))
                 .extracting(e -> ((ProtocolException) e).code()).isEqualTo(ErrorCode.MALFORMED_JSON);
         assertThatThrownBy(() -> codec.decodeClient(new byte[] {(byte) 0xC3, (byte) 0xA9}))
                 .hasMessage("a line must hold one JSON object, it starts with the byte C3");
