@@ -41,7 +41,8 @@ final class BuildChecks {
             entry("jazzer", "jazzer.version"),
             entry("xchart", "xchart.version"),
             entry("picocli", "picocli.version"),
-            entry("archunit", "archunit.version"));
+            entry("archunit", "archunit.version"),
+            entry("json-schema-validator", "json-schema-validator.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

@@ -3,21 +3,18 @@ package io.orchard.protocol;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.Message;
+import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.value.ModelFormat;
+import io.orchard.protocol.value.ModelSpec;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import tools.jackson.core.JacksonException;
 import tools.jackson.core.JsonParser;
 import tools.jackson.core.JsonToken;
-import tools.jackson.core.exc.InputCoercionException;
-import tools.jackson.core.exc.StreamReadException;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.ObjectReader;
 import tools.jackson.databind.ObjectWriter;
-import tools.jackson.databind.exc.InvalidTypeIdException;
-import tools.jackson.databind.exc.ValueInstantiationException;
 import tools.jackson.databind.json.JsonMapper;
 import tools.jackson.databind.jsontype.NamedType;
 
@@ -42,8 +39,6 @@ public final class MessageCodec {
 
     /** The longest line of a message that carries a model or a snapshot: 8 MiB. */
     public static final int MAX_LARGE_LINE_BYTES = 8 * 1024 * 1024;
-
-    private static final Pattern QUOTED = Pattern.compile("'([^']*)'");
 
     private final ObjectReader reader;
     private final ObjectWriter writer;
@@ -104,6 +99,14 @@ public final class MessageCodec {
         while (length > 0 && (utf8[length - 1] == '\n' || utf8[length - 1] == '\r')) {
             length--;
         }
+        try {
+            return read(utf8, length);
+        } catch (ProtocolException e) {
+            throw new ProtocolException(e.code(), e.getMessage(), seqOf(utf8, length));
+        }
+    }
+
+    private Message read(byte[] utf8, int length) {
         if (length > MAX_LARGE_LINE_BYTES) {
             throw new ProtocolException(ErrorCode.LINE_TOO_LONG,
                     "line of " + length + " bytes is longer than the limit of " + MAX_LARGE_LINE_BYTES);
@@ -117,8 +120,8 @@ public final class MessageCodec {
         }
         if (utf8[first] != '{') {
             // Jackson would read an array as [type, object]; the protocol has only objects.
-            throw new ProtocolException(ErrorCode.MALFORMED_JSON, "a line must hold one JSON object, it starts with '"
-                    + (char) (utf8[first] & 0x7f) + "'");
+            throw new ProtocolException(ErrorCode.MALFORMED_JSON, "a line must hold one JSON object, it starts with "
+                    + start(utf8, first, length));
         }
         if (length > MAX_LINE_BYTES) {
             Class<? extends Message> type = MessageTypes.all().get(peekType(utf8, length));
@@ -131,19 +134,40 @@ public final class MessageCodec {
         if (encoding != null) {
             throw new ProtocolException(ErrorCode.MALFORMED_JSON, encoding);
         }
-        Message message;
+        // The parser stays open until the error is told: it still stands on the value that was refused.
+        JsonParser parser = reader.createParser(utf8, 0, length);
         try {
-            message = reader.readValue(utf8, 0, length);
+            Message message = reader.readValue(parser);
+            if (parser.nextToken() != null) {
+                throw new ProtocolException(ErrorCode.MALFORMED_JSON,
+                        "malformed JSON: more than one JSON value on the line");
+            }
+            return message;
         } catch (JacksonException e) {
-            throw translate(e);
+            throw DecodeErrors.translate(e);
+        } catch (ProtocolException e) {
+            throw e;
         } catch (RuntimeException e) {
-            throw new ProtocolException(ErrorCode.INVALID_VALUE, "cannot decode line: " + e);
+            throw new ProtocolException(ErrorCode.INVALID_VALUE, "cannot decode the line: " + e.getMessage());
+        } finally {
+            parser.close();
         }
-        return message;
+    }
+
+    /** How a line that is not an object begins, for the error: a byte-order mark, a character or a byte. */
+    private static String start(byte[] utf8, int first, int length) {
+        if (length - first >= 3 && (utf8[first] & 0xff) == 0xEF && (utf8[first + 1] & 0xff) == 0xBB
+                && (utf8[first + 2] & 0xff) == 0xBF) {
+            return "a byte-order mark (bytes EF BB BF), which a line must not have";
+        }
+        int b = utf8[first] & 0xff;
+        return b > 0x20 && b < 0x7f ? "'" + (char) b + "'" : String.format(java.util.Locale.ROOT, "the byte %02X", b);
     }
 
     /**
-     * Decodes a line sent by a client, as the server does.
+     * Decodes a line sent by a client, as the server does: a message of the server's direction is
+     * refused, and so is a {@code Register} whose model is a bundled one that does not exist (one
+     * not in {@link ModelSpec#BUNDLED_NAMES}).
      *
      * @throws ProtocolException when the line is not a valid client message
      */
@@ -154,11 +178,22 @@ public final class MessageCodec {
     /** Decodes a line of UTF-8 sent by a client; see {@link #decodeClient(String)}. */
     public ClientMessage decodeClient(byte[] utf8) {
         Message message = decode(utf8);
-        if (message instanceof ClientMessage client) {
-            return client;
+        if (!(message instanceof ClientMessage client)) {
+            throw new ProtocolException(ErrorCode.WRONG_DIRECTION, "type '" + MessageTypes.nameOf(message.getClass())
+                    + "' is sent by the server, not by clients", seqOf(utf8, utf8.length));
         }
-        throw new ProtocolException(ErrorCode.WRONG_DIRECTION,
-                "type '" + MessageTypes.nameOf(message.getClass()) + "' is sent by the server, not by clients");
+        if (client instanceof RegisterMessage register && register.model() != null
+                && register.model().format() == ModelFormat.BUNDLED
+                && !ModelSpec.BUNDLED_NAMES.contains(register.model().bundled())) {
+            // Checked here, not in ModelSpec: a viewer reading a newer server's AgentAdded shows a placeholder instead.
+            throw new ProtocolException(ErrorCode.INVALID_VALUE, "model.bundled must be one of "
+                    + quoted(ModelSpec.BUNDLED_NAMES) + ", was '" + register.model().bundled() + "'", register.seq());
+        }
+        return client;
+    }
+
+    private static String quoted(List<String> names) {
+        return String.join(", ", names.stream().map(name -> "'" + name + "'").toList());
     }
 
     /**
@@ -180,6 +215,31 @@ public final class MessageCodec {
                 "type '" + MessageTypes.nameOf(message.getClass()) + "' is sent by clients, not by the server");
     }
 
+    /**
+     * The top-level {@code "seq"} of a line that failed, for its error to echo: an integer from 0 to
+     * 2<sup>63</sup>&minus;1 found before the line stops being JSON (the reader passes over a
+     * byte-order mark); 0 when there is none.
+     */
+    private long seqOf(byte[] utf8, int length) {
+        try (JsonParser parser = reader.createParser(utf8, 0, length)) {
+            if (parser.nextToken() != JsonToken.START_OBJECT) {
+                return 0;
+            }
+            while (parser.nextToken() == JsonToken.PROPERTY_NAME) {
+                String name = parser.currentName();
+                JsonToken value = parser.nextToken();
+                if (name.equals("seq")) {
+                    return value == JsonToken.VALUE_NUMBER_INT && parser.getNumberType() != JsonParser.NumberType.BIG_INTEGER
+                            && parser.getLongValue() >= 0 ? parser.getLongValue() : 0;
+                }
+                parser.skipChildren();
+            }
+            return 0;
+        } catch (JacksonException e) {
+            return 0;
+        }
+    }
+
     /** The top-level "type" of a long line, read without building the message; null if there is none. */
     private String peekType(byte[] utf8, int length) {
         try (JsonParser parser = reader.createParser(utf8, 0, length)) {
@@ -198,77 +258,5 @@ public final class MessageCodec {
         } catch (JacksonException e) {
             return null;
         }
-    }
-
-    private static ProtocolException translate(JacksonException e) {
-        String path = path(e.getPath());
-        String original = firstLine(e.getOriginalMessage());
-        if (e instanceof InvalidTypeIdException typeId) {
-            String id = typeId.getTypeId();
-            if (id == null || id.isEmpty()) {
-                return new ProtocolException(ErrorCode.MISSING_FIELD, "missing field 'type'");
-            }
-            return new ProtocolException(ErrorCode.UNKNOWN_TYPE,
-                    "unknown message type '" + id + "'; known types are " + MessageTypes.names());
-        }
-        if (e instanceof ValueInstantiationException) {
-            Throwable cause = e.getCause() == null ? e : e.getCause();
-            String problem = firstLine(cause.getMessage());
-            Matcher missing = Pattern.compile("^missing field '([^']*)'$").matcher(problem);
-            if (missing.matches()) {
-                return new ProtocolException(ErrorCode.MISSING_FIELD,
-                        "missing field '" + join(path, missing.group(1)) + "'");
-            }
-            return new ProtocolException(ErrorCode.INVALID_VALUE, path.isEmpty() ? problem : path + "." + problem);
-        }
-        if (original.startsWith("Missing required creator property")) {
-            Matcher name = QUOTED.matcher(original);
-            String field = name.find() ? name.group(1) : "?";
-            String full = path.equals(field) || path.endsWith("." + field) ? path : join(path, field);
-            return new ProtocolException(ErrorCode.MISSING_FIELD, "missing field '" + full + "'");
-        }
-        if (original.startsWith("Trailing token")) {
-            return new ProtocolException(ErrorCode.MALFORMED_JSON, "malformed JSON: more than one JSON value on the line");
-        }
-        if (e instanceof InputCoercionException && e.processor() instanceof JsonParser parser) {
-            String field = path.isEmpty() ? String.valueOf(parser.currentName()) : path;
-            return new ProtocolException(ErrorCode.INVALID_VALUE, "invalid value for '" + field + "': " + original);
-        }
-        if (e instanceof StreamReadException && !(e instanceof tools.jackson.databind.exc.MismatchedInputException)) {
-            String where = e.getLocation() == null ? "" : " at column " + e.getLocation().getColumnNr();
-            return new ProtocolException(ErrorCode.MALFORMED_JSON, "malformed JSON" + where + ": " + original);
-        }
-        if (path.isEmpty()) {
-            return new ProtocolException(ErrorCode.MALFORMED_JSON, "a line must hold one JSON object: " + original);
-        }
-        return new ProtocolException(ErrorCode.INVALID_VALUE, "invalid value for '" + path + "': " + original);
-    }
-
-    private static String path(List<JacksonException.Reference> references) {
-        StringBuilder path = new StringBuilder();
-        for (JacksonException.Reference reference : references) {
-            if (reference.getPropertyName() != null) {
-                if (path.length() > 0) {
-                    path.append('.');
-                }
-                path.append(reference.getPropertyName());
-            } else if (reference.getIndex() >= 0) {
-                path.append('[').append(reference.getIndex()).append(']');
-            }
-        }
-        return path.toString();
-    }
-
-    private static String join(String path, String field) {
-        return path.isEmpty() ? field : path + "." + field;
-    }
-
-    private static String firstLine(String text) {
-        if (text == null) {
-            return "";
-        }
-        int newline = text.indexOf('\n');
-        String line = newline < 0 ? text : text.substring(0, newline);
-        return line.replace('`', '\'').strip();
     }
 }

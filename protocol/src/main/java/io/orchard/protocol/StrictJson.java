@@ -10,6 +10,7 @@ import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.MapperFeature;
 import tools.jackson.databind.cfg.CoercionAction;
 import tools.jackson.databind.cfg.CoercionInputShape;
+import tools.jackson.databind.cfg.EnumFeature;
 import tools.jackson.databind.json.JsonMapper;
 import tools.jackson.databind.type.LogicalType;
 
@@ -24,7 +25,8 @@ import tools.jackson.databind.type.LogicalType;
  * this off so that newer peers may add fields), a missing record component unless it is
  * {@code @Nullable} ({@link RequiredUnlessNullable}), {@code null} for a number or boolean,
  * duplicate keys at any depth, anything after the document, a fraction where an integer belongs,
- * a string where a number or boolean belongs and the other way round, and anything beyond the
+ * a string where a number or boolean belongs and the other way round, a number where an enum's
+ * name belongs (Jackson would take it for the constant's index), and anything beyond the
  * {@link StreamReadConstraints read limits}: Jackson's defaults, or those given to
  * {@link #builder(StreamReadConstraints)}. Writing leaves out {@code null} values and keeps a
  * record's components in their declared order.
@@ -60,6 +62,7 @@ public final class StrictJson {
                 .enable(DeserializationFeature.FAIL_ON_INVALID_SUBTYPE)
                 .disable(DeserializationFeature.ACCEPT_FLOAT_AS_INT)
                 .disable(MapperFeature.ALLOW_COERCION_OF_SCALARS)
+                .enable(EnumFeature.FAIL_ON_NUMBERS_FOR_ENUMS)
                 .disable(MapperFeature.SORT_PROPERTIES_ALPHABETICALLY)
                 .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
                 .enable(StreamReadFeature.USE_FAST_DOUBLE_PARSER)

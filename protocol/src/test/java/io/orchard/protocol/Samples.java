@@ -18,7 +18,7 @@ final class Samples {
 
     private static final List<Message> ALL = List.of(
             new HelloMessage(1, 2, Role.AGENT, "guppy-controller", null),
-            new RegisterMessage(2, "Guppy", BODY, ModelSpec.bundled("guppy")),
+            new RegisterMessage(2, "Guppy", BODY, ModelSpec.bundled("figure")),
             new RegisterJointMessage(3, "Guppy", "LeftKnee"),
             new RegisterTimeSensorMessage(4, "Guppy", "GuppyTSWalk"),
             new UnregisterMessage(5, "Guppy"),
@@ -34,8 +34,9 @@ final class Samples {
             new SayMessage(15, "Guppy", "Which banana do you mean: F3 or F7?"),
             new GameControlMessage(16, GameCommand.START),
             new KeepAliveMessage(17),
-            new WelcomeMessage(1, 2, "0.1.0", Role.AGENT, new Bounds(-100, -100, 100, 100), 20, ClockMode.LOCKSTEP, 0),
-            new ErrorMessage(6, ErrorCode.INVALID_VALUE, "Move: from.x must be a finite number, was Infinity"),
+            new WelcomeMessage(1, 2, "0.1.0", Role.AGENT, new Bounds(-100, -100, 100, 100), 20, ClockMode.LOCKSTEP, 0, 180.0,
+                    GamePhase.WAITING),
+            new ErrorMessage(6, ErrorCode.INVALID_VALUE, "from.x must be a finite number, was Infinity"),
             new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0, "3f9c2a7e41b8d05c6e1f9a2b7c4d8e0f", 8071234567890123456L),
             new ActionResultMessage(6, "Guppy", "Move", Outcome.REJECTED, "path crosses tree T17", null, 0),
             new GraspResultMessage(11, "Guppy", "F12", true, null, 2),

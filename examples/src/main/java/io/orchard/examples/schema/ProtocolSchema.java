@@ -49,11 +49,13 @@ import tools.jackson.databind.node.ObjectNode;
  * records and enums that messages carry ({@code Vec3}, {@code Body}, {@code Sector}, ...) are
  * shared under {@code $defs}, sorted by name. The rules follow the codec:
  * <ul>
- *   <li>a component is required unless it is annotated {@link Nullable};</li>
+ *   <li>a component is required unless it is annotated {@link Nullable}, and then it may also be null;</li>
  *   <li>{@code int} and {@code long} are integers, {@code double} a number, a {@code List} an array;</li>
  *   <li>an enum is a string, one of its wire names (the value of its {@link JsonValue} method);</li>
  *   <li>a getter the codec writes besides the components (a public {@code isX()} or {@code getX()})
  *       is an optional, read-only property: decoders ignore it.</li>
+ *   <li>each field carries the constraints docs/protocol.md states for it ({@link Constraints}): bounds,
+ *       patterns, lengths, the bundled models' names.</li>
  * </ul>
  * Unknown properties are allowed, as decoders ignore fields they do not know. The output is the
  * same on every run and platform: pretty-printed with two spaces and ending with a newline.
@@ -92,17 +94,45 @@ public final class ProtocolSchema {
         document.put("$schema", DIALECT);
         document.put("title", "Orchard protocol " + ProtocolVersion.CURRENT);
         document.put("description", "One message of the Orchard protocol: a JSON object on one line, whose"
-                + " \"type\" names the message type. Required fields must be present, the others may be left"
-                + " out; decoders ignore fields they do not know.");
+                + " \"type\" names the message type. Required fields must be present and not null, the others may"
+                + " be left out or null; decoders ignore fields they do not know. Besides what this schema checks,"
+                + " an integer is written without fraction or exponent (7, not 7.0 or 7e0), and a few rules"
+                + " compare two fields or count UTF-16 code units: the descriptions state them.");
         ArrayNode oneOf = document.putArray("oneOf");
         Map<String, JsonNode> shared = new TreeMap<>();
         generated.properties().forEach(entry -> shared.put(entry.getKey(), entry.getValue()));
         references.forEach((name, reference) -> {
             String key = reference.get("$ref").asString().substring(REFERENCE_PREFIX.length());
-            oneOf.add(message(name, MessageTypes.all().get(name), (ObjectNode) shared.remove(key)));
+            ObjectNode branch = message(name, MessageTypes.all().get(name), (ObjectNode) shared.remove(key));
+            Constraints.apply(MessageTypes.all().get(name), branch);
+            oneOf.add(branch);
+        });
+        Map<String, Class<?>> records = valueRecords();
+        shared.forEach((key, definition) -> {
+            Class<?> record = records.get(key);
+            if (record != null) {
+                Constraints.apply(record, (ObjectNode) definition);
+            }
         });
         document.putObject(DEFINITIONS).setAll(shared);
         return document;
+    }
+
+    /** The records that messages carry, directly or in lists, by the name of their definition. */
+    private static Map<String, Class<?>> valueRecords() {
+        Map<String, Class<?>> found = new TreeMap<>();
+        java.util.Deque<Class<?>> pending = new java.util.ArrayDeque<>(MessageTypes.all().values());
+        while (!pending.isEmpty()) {
+            for (RecordComponent component : pending.removeFirst().getRecordComponents()) {
+                java.lang.reflect.Type generic = component.getGenericType();
+                Class<?> type = generic instanceof java.lang.reflect.ParameterizedType list
+                        && list.getActualTypeArguments()[0] instanceof Class<?> item ? item : component.getType();
+                if (type.isRecord() && found.putIfAbsent(type.getSimpleName(), type) == null) {
+                    pending.add(type);
+                }
+            }
+        }
+        return found;
     }
 
     /** A message's branch: its generated definition with the constant {@code type} in front. */

@@ -80,16 +80,39 @@ class ProtocolSchemaTest {
     }
 
     @Test
-    void moveRequiresEveryField() {
-        assertThat(strings(branch("Move").get("required"))).containsExactly("type", "seq", "agent", "from", "to");
-        assertThat(branch("Move").at("/properties/from/$ref").asString()).isEqualTo("#/$defs/Vec3");
+    void moveRequiresEveryFieldButFromWhichMayBeNull() {
+        assertThat(strings(branch("Move").get("required"))).containsExactly("type", "seq", "agent", "to");
+        assertThat(branch("Move").at("/properties/from/anyOf/0/$ref").asString()).isEqualTo("#/$defs/Vec3");
+        assertThat(branch("Move").at("/properties/from/anyOf/1/type").asString()).isEqualTo("null");
+        assertThat(branch("Move").at("/properties/to/$ref").asString()).isEqualTo("#/$defs/Vec3");
     }
 
     @Test
-    void registerDoesNotRequireItsNullableModel() {
+    void registerDoesNotRequireItsNullableModelWhichMayBeNull() {
         JsonNode register = branch("Register");
         assertThat(strings(register.get("required"))).containsExactly("type", "seq", "name", "body");
-        assertThat(register.at("/properties/model/$ref").asString()).isEqualTo("#/$defs/ModelSpec");
+        assertThat(register.at("/properties/model/anyOf/0/$ref").asString()).isEqualTo("#/$defs/ModelSpec");
+        assertThat(register.at("/properties/model/anyOf/1/type").asString()).isEqualTo("null");
+    }
+
+    @Test
+    void theConstraintsOfTheSpecAreInTheSchema() {
+        assertThat(branch("EndTurn").at("/properties/seq/minimum").asLong()).isZero();
+        assertThat(branch("EndTurn").at("/properties/seq/maximum").asLong()).isEqualTo(Long.MAX_VALUE);
+        assertThat(branch("Unregister").at("/properties/agent/pattern").asString())
+                .isEqualTo("^[A-Za-z][A-Za-z0-9_-]{0,31}$");
+        assertThat(schema.at("/$defs/Body/properties/radius/exclusiveMinimum").asDouble()).isZero();
+        assertThat(schema.at("/$defs/Sight/properties/fieldOfView/maximum").asDouble()).isEqualTo(2 * Math.PI);
+        assertThat(schema.at("/$defs/RelativePosition/properties/bearing/maximum").asDouble())
+                .isEqualTo(Math.PI + 1e-9);
+        JsonNode bundled = schema.at("/$defs/ModelSpec/properties/bundled/enum");
+        assertThat(bundled).hasSize(3);
+        assertThat(List.of(bundled.get(0).asString(), bundled.get(1).asString())).containsExactly("figure", "bunny");
+        assertThat(bundled.get(2).isNull()).as("an optional name may be null").isTrue();
+        assertThat(strings(schema.at("/$defs/ModelSpec/then/required"))).containsExactly("bundled");
+        assertThat(schema.at("/$defs/CastleShape/properties/footprint/minItems").asInt()).isEqualTo(3);
+        assertThat(branch("Say").at("/properties/text/maxLength").asInt()).isEqualTo(1000);
+        assertThat(branch("GameStarted").at("/properties/seed/type")).hasSize(2);
     }
 
     @ParameterizedTest(name = "{0}")
@@ -212,8 +235,10 @@ class ProtocolSchemaTest {
         }
     }
 
+    /** The definition a property stands for: through its {@code $ref}, and for an optional one through its first choice. */
     private static JsonNode resolve(JsonNode node) {
-        return node.has("$ref") ? schema.at(node.get("$ref").asString().substring(1)) : node;
+        JsonNode chosen = node.has("anyOf") ? node.get("anyOf").get(0) : node;
+        return chosen.has("$ref") ? schema.at(chosen.get("$ref").asString().substring(1)) : chosen;
     }
 
     private static JsonNode branch(String type) {
@@ -256,7 +281,7 @@ class ProtocolSchemaTest {
     }
 
     /** The directory holding pom.xml and settings.gradle.kts or docs/: the working directory or one above it. */
-    private static Path repositoryRoot() {
+    static Path repositoryRoot() {
         Path start = Path.of("").toAbsolutePath();
         for (Path dir = start; dir != null; dir = dir.getParent()) {
             if (Files.isRegularFile(dir.resolve("pom.xml"))

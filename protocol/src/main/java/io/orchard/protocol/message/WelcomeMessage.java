@@ -3,6 +3,8 @@ package io.orchard.protocol.message;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Checks;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GamePhase;
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Role;
 
 /**
@@ -16,6 +18,9 @@ import io.orchard.protocol.value.Role;
  * @param tickRate simulation ticks per simulated second
  * @param clock realtime or lockstep
  * @param tick the current tick
+ * @param timeLimit the game's length in simulated seconds (version 2), so that a client that joins
+ *                  a game under way knows it without having seen {@code GameStarted}
+ * @param phase where the game is (version 2): waiting, running, paused or over
  */
 public record WelcomeMessage(long seq,
                              int protocolVersion,
@@ -24,7 +29,9 @@ public record WelcomeMessage(long seq,
                              Bounds bounds,
                              int tickRate,
                              ClockMode clock,
-                             long tick) implements ServerMessage, Reply {
+                             long tick,
+                             @Nullable Double timeLimit,
+                             @Nullable GamePhase phase) implements ServerMessage, Reply {
 
     /** Checks the components; a bad value is refused with an exception that names it. */
     public WelcomeMessage {
@@ -40,5 +47,20 @@ public record WelcomeMessage(long seq,
         }
         Checks.present(clock, "clock");
         Checks.nonNegative(tick, "tick");
+        if (timeLimit != null) {
+            Checks.nonNegative(timeLimit, "timeLimit");
+        }
+    }
+
+    /** A welcome without the game's time limit and phase, as version 1 clients get it. */
+    public WelcomeMessage(long seq, int protocolVersion, String serverVersion, Role role, Bounds bounds, int tickRate,
+                          ClockMode clock, long tick) {
+        this(seq, protocolVersion, serverVersion, role, bounds, tickRate, clock, tick, null, null);
+    }
+
+    /** The same welcome as a client of {@code version} gets it: without the fields of version 2 for version 1. */
+    public WelcomeMessage forVersion(int version) {
+        return version >= 2 || (timeLimit == null && phase == null) ? this
+                : new WelcomeMessage(seq, protocolVersion, serverVersion, role, bounds, tickRate, clock, tick);
     }
 }

@@ -1,6 +1,7 @@
 package io.orchard.protocol.value;
 
 import java.util.Base64;
+import java.util.List;
 
 /**
  * An agent's visual model, sent at registration so that viewers show the agent as its author
@@ -8,11 +9,18 @@ import java.util.Base64;
  * name of a model the viewer ships ({@code format} {@link ModelFormat#BUNDLED} and {@code bundled}).
  *
  * @param format  the model's format
- * @param bundled the name of a bundled model, only with {@link ModelFormat#BUNDLED}
+ * @param bundled the name of a bundled model, only with {@link ModelFormat#BUNDLED}: one of
+ *                {@link #BUNDLED_NAMES}, which the server checks when an agent registers
  * @param data    the model file, Base64-encoded (standard alphabet, with padding); at most
  *                {@link #MAX_MODEL_BYTES} once decoded
  */
 public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable String data) {
+
+    /**
+     * The models a viewer ships, by the name a {@code bundled} spec gives: an agent that names one
+     * is drawn as that model. The server refuses a registration that names any other.
+     */
+    public static final List<String> BUNDLED_NAMES = List.of("figure", "bunny");
 
     /** The largest model, in bytes before Base64 encoding: 4 MiB. */
     public static final int MAX_MODEL_BYTES = 4 * 1024 * 1024;
@@ -38,7 +46,8 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
             try {
                 size = Base64.getDecoder().decode(data).length;
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("data must be Base64: " + e.getMessage());
+                throw new IllegalArgumentException("data must be Base64 (the standard alphabet A-Z, a-z, 0-9, '+', '/',"
+                        + " with '=' padding), " + notBase64(data));
             }
             // The length test above lets through up to two bytes more than the limit: count exactly.
             if (size > MAX_MODEL_BYTES) {
@@ -46,6 +55,21 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
                         + " bytes, it decodes to " + size);
             }
         }
+    }
+
+    /** What is wrong with text that does not decode as Base64, naming the first bad character or the length. */
+    private static String notBase64(String data) {
+        int padding = data.indexOf('=');
+        for (int i = 0; i < data.length(); i++) {
+            char c = data.charAt(i);
+            boolean alphabet = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '+'
+                    || c == '/';
+            if (!alphabet && c != '=' || c != '=' && padding >= 0 && i > padding) {
+                return "has " + (c >= 0x20 && c < 0x7f ? "'" + c + "'" : String.format(java.util.Locale.ROOT,
+                        "U+%04X", (int) c)) + " at character " + i;
+            }
+        }
+        return "its " + data.length() + " characters do not make whole groups of 4 (with padding)";
     }
 
     /** A model given by its bytes. */

@@ -42,7 +42,7 @@ final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
         try {
             out.add(codec.decodeClient(line));
         } catch (ProtocolException e) {
-            ErrorMessage error = new ErrorMessage(SeqSniffer.seqOf(line), e.code(), shorten(e.getMessage()));
+            ErrorMessage error = new ErrorMessage(e.seq(), e.code(), shorten(e.getMessage()));
             if (e.code() == ErrorCode.LINE_TOO_LONG) {
                 ctx.writeAndFlush(error).addListener(ChannelFutureListener.CLOSE);
             } else {

@@ -103,7 +103,7 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
         }
         long id = shared.sessionIds().incrementAndGet();
         session = new NettySession(id, hello.role(), hello.protocolVersion(), ctx.channel(), shared, outbox);
-        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
+        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()).forVersion(hello.protocolVersion()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);
     }

@@ -39,9 +39,6 @@ import java.util.Map;
  */
 final class Actions {
 
-    /** How far {@code from} of a move may be from where the server has the agent. */
-    static final double FROM_TOLERANCE = 0.5;
-
     private final World world;
     /** The agents in the world, by name. */
     private final Map<String, Agent> agents;
@@ -72,8 +69,9 @@ final class Actions {
             move(agent, m, phase);
         } else if (action instanceof SetRotationMessage m) {
             if (!m.rotation().isAboutUpAxis()) {
-                reject(agent, m.seq(), m, "an agent turns only about the up axis (0, 1, 0), axis was "
-                        + m.rotation().axis());
+                Vec3 axis = m.rotation().axis();
+                reject(agent, m.seq(), m, String.format(java.util.Locale.ROOT, "an agent turns only about the up axis"
+                        + " (0, 1, 0), axis was (%s, %s, %s)", axis.x(), axis.y(), axis.z()));
             } else if (!running) {
                 notRunning(agent, m.seq(), m, phase);
             } else {
@@ -151,10 +149,11 @@ final class Actions {
         }
         double time = outbox.time();
         Vec3 here = agent.position;
-        if (here.groundDistance(move.from()) > FROM_TOLERANCE) {
+        // Without a from the agent walks from wherever it is now, however late the move arrived.
+        if (move.from() != null && here.groundDistance(move.from()) > MoveMessage.FROM_TOLERANCE) {
             reject(agent, move.seq(), move, String.format(java.util.Locale.ROOT,
-                    "from (%.2f, %.2f) is not where %s is: (%.2f, %.2f)", move.from().x(), move.from().z(),
-                    agent.name, here.x(), here.z()));
+                    "from (%.2f, %.2f) is not where %s is: (%.2f, %.2f), it may be at most %s units away",
+                    move.from().x(), move.from().z(), agent.name, here.x(), here.z(), MoveMessage.FROM_TOLERANCE));
             return;
         }
         Vec3 to = Vec3.ground(move.to().x(), move.to().z());

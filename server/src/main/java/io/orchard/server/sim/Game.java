@@ -6,6 +6,7 @@ import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.message.GameStartedMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Outcome;
+import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
 import io.orchard.server.world.World;
@@ -29,7 +30,8 @@ final class Game {
     private final List<GameListener> listeners;
     /** Run just before the game starts: the last of the waiting. */
     private final Runnable beforeStart;
-    private Phase phase = Phase.WAITING;
+    /** Read by the network threads for their welcomes. */
+    private volatile Phase phase = Phase.WAITING;
     /** In lockstep: enough agents came, and the game starts when their setup turns are over. */
     private boolean startDue;
     private int fruitAtStart;
@@ -75,8 +77,23 @@ final class Game {
         beforeStart.run();
         phase = Phase.RUNNING;
         fruitAtStart = world.fruitCount();
-        outbox.broadcast(new GameStartedMessage(outbox.tick(), seed, fruitAtStart, config.timeLimit()), Audience.ALL);
+        // The world's seed would give the world away to an agent: only viewers hear it.
+        GameStartedMessage started = new GameStartedMessage(outbox.tick(), seed, fruitAtStart, config.timeLimit());
+        outbox.broadcast(started, Audience.VIEWERS);
+        outbox.broadcast(started.withoutSeed(), Audience.AGENTS);
         listeners.forEach(l -> l.gameStarted(seed, fruitAtStart, config.timeLimit()));
+    }
+
+    /**
+     * Tells a client that connected after the start what it missed: the {@code GameStarted} of this
+     * game, the seed for viewers only. Nothing while the game waits (it will hear the start) or is over.
+     */
+    void joinedLate(ClientSession session) {
+        if (phase == Phase.RUNNING || phase == Phase.PAUSED) {
+            // A game's first tick is 0, wherever it is now.
+            GameStartedMessage started = new GameStartedMessage(0, seed, fruitAtStart, config.timeLimit());
+            outbox.send(session, session.role() == Role.VIEWER ? started : started.withoutSeed());
+        }
     }
 
     /** A new agent entered, and {@code present} are in the world: the game starts when enough came. */

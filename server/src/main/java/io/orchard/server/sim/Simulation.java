@@ -16,6 +16,7 @@ import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GamePhase;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
@@ -121,7 +122,7 @@ public final class Simulation implements Inbox {
     @Override
     public WelcomeMessage welcome(long seq, Role role) {
         return new WelcomeMessage(seq, ProtocolVersion.CURRENT, serverVersion, role, world.bounds(), config.tickRate(),
-                config.clock(), outbox.tick());
+                config.clock(), outbox.tick(), config.timeLimit(), GamePhase.valueOf(game.phase().name()));
     }
 
     // ---- the tick thread ---------------------------------------------------------------------
@@ -243,6 +244,7 @@ public final class Simulation implements Inbox {
                 outbox.catchUp(session, new AgentAddedMessage(outbox.tick(), agent.state()));
             }
         }
+        game.joinedLate(session);
     }
 
     /** Where each client message is handled: every message about one agent by {@link Actions}. */

@@ -121,7 +121,8 @@ class SimulationTest {
         assertThat(registered.body().sight().range()).isEqualTo(60);
         assertThat(registered.position()).isEqualTo(Vec3.ground(0, 0));
         assertThat(viewer.last(AgentAddedMessage.class).agent().name()).isEqualTo("Guppy");
-        assertThat(agents.last(GameStartedMessage.class).seed()).isEqualTo(7);
+        assertThat(agents.last(GameStartedMessage.class).seed()).isNull();
+        assertThat(viewer.last(GameStartedMessage.class).seed()).isEqualTo(7L);
         assertThat(sim.phase()).isEqualTo(Phase.RUNNING);
     }
 

@@ -1,5 +1,6 @@
 package io.orchard.viewer.agent;
 
+import io.orchard.protocol.value.ModelSpec;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
@@ -21,8 +22,8 @@ import java.util.regex.Pattern;
  */
 public final class BundledModels {
 
-    /** The bundled models, by the name an agent gives. */
-    public static final List<String> NAMES = List.of("figure", "bunny");
+    /** The bundled models, by the name an agent gives: the protocol's list, which the server checks registrations by. */
+    public static final List<String> NAMES = ModelSpec.BUNDLED_NAMES;
 
     private static final Pattern NAMED = Pattern.compile("\\b(DEF|USE|fromNode|toNode)=(['\"])([A-Za-z][A-Za-z0-9_-]*)\\2");
     private static final Pattern HEIGHT =
