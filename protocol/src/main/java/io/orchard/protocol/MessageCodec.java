@@ -1,5 +1,6 @@
 package io.orchard.protocol;
 
+import com.fasterxml.jackson.annotation.JsonFormat;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.Message;
@@ -247,6 +248,9 @@ public final class MessageCodec {
     private static String path(List<JacksonException.Reference> references) {
         StringBuilder path = new StringBuilder();
         for (JacksonException.Reference reference : references) {
+            if (reference.getPropertyName() != null && writtenAsArray(reference.from())) {
+                continue; // the element's index follows, and the check's text names the component
+            }
             if (reference.getPropertyName() != null) {
                 if (path.length() > 0) {
                     path.append('.');
@@ -257,6 +261,13 @@ public final class MessageCodec {
             }
         }
         return path.toString();
+    }
+
+    /** Whether the value is a record written as an array of its components (a tuple of the lean form). */
+    private static boolean writtenAsArray(Object from) {
+        Class<?> type = from instanceof Class<?> c ? c : from == null ? null : from.getClass();
+        JsonFormat format = type == null ? null : type.getAnnotation(JsonFormat.class);
+        return format != null && format.shape() == JsonFormat.Shape.ARRAY;
     }
 
     private static String join(String path, String field) {

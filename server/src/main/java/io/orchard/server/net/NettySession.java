@@ -5,7 +5,10 @@ import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.LandmarkPerceptionMessage;
+import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
@@ -24,7 +27,9 @@ import org.slf4j.LoggerFactory;
  * client rather than one per message, and no encoding on the tick's thread. The data of an agent's
  * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
- * tick nor grow the server's memory.
+ * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
+ * three messages of each perception, which the simulation sends one after the other, as one
+ * {@code LeanPerception} line ({@link LeanLines}), and no result for an accepted move unless it asked.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -37,6 +42,7 @@ final class NettySession implements ClientSession {
 
     private final long id;
     private final Role role;
+    private final ClientForms forms;
     private final Channel channel;
     private final SessionContext shared;
     private final Outbox outbox;
@@ -46,9 +52,10 @@ final class NettySession implements ClientSession {
     private final AtomicInteger unwritten = new AtomicInteger();
 
     /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
-    NettySession(long id, Role role, Channel channel, SessionContext shared, Outbox outbox) {
+    NettySession(long id, Role role, ClientForms forms, Channel channel, SessionContext shared, Outbox outbox) {
         this.id = id;
         this.role = role;
+        this.forms = forms;
         this.channel = channel;
         this.shared = shared;
         this.outbox = outbox;
@@ -66,7 +73,7 @@ final class NettySession implements ClientSession {
 
     @Override
     public void send(ServerMessage message) {
-        if (isOpen()) {
+        if (isOpen() && forms.sends(message)) {
             batch.add(message);
         }
     }
@@ -105,9 +112,15 @@ final class NettySession implements ClientSession {
         unwritten.decrementAndGet();
         ByteBuf buffer = channel.alloc().buffer(messages.size() * 256);
         try {
-            for (Object message : messages) {
+            for (int i = 0; i < messages.size(); i++) {
+                Object message = messages.get(i);
                 ServerMessage plain = message instanceof EncodedLine line ? line.message() : (ServerMessage) message;
-                if (plain instanceof AgentAddedMessage added && ModelLines.carriesData(added)) {
+                if (forms.leanPerception() && plain instanceof PerceptionMessage seen && i + 2 < messages.size()
+                        && messages.get(i + 1) instanceof LandmarkPerceptionMessage landmarks
+                        && messages.get(i + 2) instanceof CastlePerceptionMessage castle) {
+                    LeanLines.write(seen, landmarks, castle, buffer);
+                    i += 2;
+                } else if (plain instanceof AgentAddedMessage added && ModelLines.carriesData(added)) {
                     ModelLines.Cut cut = ModelLines.cut(CODEC, added);
                     outbox.add(buffer.writeBytes(cut.before()), false);
                     outbox.add(shared.models().wire(added.agent().model().data()), true);

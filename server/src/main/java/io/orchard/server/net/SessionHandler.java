@@ -102,7 +102,7 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             pipeline.remove(IdleStateHandler.class);
         }
         long id = shared.sessionIds().incrementAndGet();
-        session = new NettySession(id, hello.role(), ctx.channel(), shared, outbox);
+        session = new NettySession(id, hello.role(), ClientForms.of(hello), ctx.channel(), shared, outbox);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);
