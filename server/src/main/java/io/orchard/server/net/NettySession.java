@@ -5,10 +5,7 @@ import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
-import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.ErrorMessage;
-import io.orchard.protocol.message.LandmarkPerceptionMessage;
-import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
@@ -29,7 +26,7 @@ import org.slf4j.LoggerFactory;
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
  * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
  * three messages of each perception, which the simulation sends one after the other, as one
- * {@code LeanPerception} line ({@link LeanLines}), and no result for an accepted move unless it asked.
+ * {@code LeanPerception} line ({@link TickLines}), and no result for an accepted move unless it asked.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -112,25 +109,16 @@ final class NettySession implements ClientSession {
         unwritten.decrementAndGet();
         ByteBuf buffer = channel.alloc().buffer(messages.size() * 256);
         try {
-            for (int i = 0; i < messages.size(); i++) {
-                Object message = messages.get(i);
-                ServerMessage plain = message instanceof EncodedLine line ? line.message() : (ServerMessage) message;
-                if (forms.leanPerception() && plain instanceof PerceptionMessage seen && i + 2 < messages.size()
-                        && messages.get(i + 1) instanceof LandmarkPerceptionMessage landmarks
-                        && messages.get(i + 2) instanceof CastlePerceptionMessage castle) {
-                    LeanLines.write(seen, landmarks, castle, buffer);
-                    i += 2;
-                } else if (plain instanceof AgentAddedMessage added && ModelLines.carriesData(added)) {
-                    ModelLines.Cut cut = ModelLines.cut(CODEC, added);
-                    outbox.add(buffer.writeBytes(cut.before()), false);
-                    outbox.add(shared.models().wire(added.agent().model().data()), true);
-                    buffer = channel.alloc().buffer(Math.max(256, cut.after().length));
-                    buffer.writeBytes(cut.after());
-                } else if (message instanceof EncodedLine line) {
-                    buffer.writeBytes(line.bytes());
-                } else if (!FastLines.write(plain, buffer)) {
-                    buffer.writeBytes(CODEC.encodeLine(plain));
-                }
+            int at;
+            for (int from = 0; (at = TickLines.write(messages, from, forms, buffer)) < messages.size(); from = at + 1) {
+                Object carrier = messages.get(at);
+                AgentAddedMessage added = (AgentAddedMessage) (carrier instanceof EncodedLine line ? line.message()
+                        : carrier);
+                ModelLines.Cut cut = ModelLines.cut(CODEC, added);
+                outbox.add(buffer.writeBytes(cut.before()), false);
+                outbox.add(shared.models().wire(added.agent().model().data()), true);
+                buffer = channel.alloc().buffer(Math.max(256, cut.after().length));
+                buffer.writeBytes(cut.after());
             }
         } catch (RuntimeException e) {
             buffer.release();
