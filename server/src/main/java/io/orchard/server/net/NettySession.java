@@ -13,7 +13,6 @@ import io.orchard.server.sim.EncodedLine;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -21,7 +20,9 @@ import org.slf4j.LoggerFactory;
  * A client session over a Netty channel. What the simulation sends during a tick is collected here
  * and handed to the channel's I/O thread when the tick flushes ({@link TickWrites}), which encodes
  * it all into one buffer and queues it in the client's {@link Outbox}: a tick costs one write per
- * client rather than one per message, and no encoding on the tick's thread. The data of an agent's
+ * client rather than one per message, and no encoding on the tick's thread. What is flushed before
+ * the I/O thread took the previous flush joins it (the end of one tick and the start of the next
+ * often do), so a busy server makes fewer, larger writes. The data of an agent's
  * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
  * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
@@ -45,8 +46,12 @@ final class NettySession implements ClientSession {
     private final Outbox outbox;
     private final AtomicBoolean ended = new AtomicBoolean();
     private List<Object> batch = new ArrayList<>();
-    /** Ticks whose messages were handed to the I/O thread and not yet written. */
-    private final AtomicInteger unwritten = new AtomicInteger();
+    /** Guards what was handed to the I/O thread and not yet taken by it. */
+    private final Object handoff = new Object();
+    /** Messages handed over and not yet taken: a flush before the I/O thread takes them adds to them. */
+    private List<Object> waiting;
+    /** Flushes whose messages wait in {@link #waiting}. */
+    private int waitingFlushes;
 
     /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
     NettySession(long id, Role role, ClientForms forms, Channel channel, SessionContext shared, Outbox outbox) {
@@ -92,13 +97,34 @@ final class NettySession implements ClientSession {
         if (!isOpen()) {
             return;
         }
-        if (unwritten.incrementAndGet() > MAX_UNWRITTEN_TICKS) {
-            // The I/O thread has not even encoded this client's last ticks: do not queue more.
-            unwritten.decrementAndGet();
-            outbox.cutSoon(MAX_UNWRITTEN_TICKS + " ticks of messages for this client are not yet written");
-            return;
+        synchronized (handoff) {
+            if (waiting != null) {
+                // The I/O thread has not taken the last flush yet: these go out with it, in one write.
+                if (waitingFlushes >= MAX_UNWRITTEN_TICKS) {
+                    outbox.cutSoon(MAX_UNWRITTEN_TICKS + " ticks of messages for this client are not yet written");
+                    return;
+                }
+                waiting.addAll(out);
+                waitingFlushes++;
+                return;
+            }
+            waiting = out;
+            waitingFlushes = 1;
         }
-        shared.writes().submit(channel.eventLoop(), () -> write(out));
+        shared.writes().submit(channel.eventLoop(), this::writeWaiting);
+    }
+
+    /** On the channel's I/O thread: takes what waits and writes it. */
+    private void writeWaiting() {
+        List<Object> messages;
+        synchronized (handoff) {
+            messages = waiting;
+            waiting = null;
+            waitingFlushes = 0;
+        }
+        if (messages != null) {
+            write(messages);
+        }
     }
 
     /**
@@ -106,7 +132,6 @@ final class NettySession implements ClientSession {
      * except the data of models, which go out from the copy every client shares.
      */
     private void write(List<Object> messages) {
-        unwritten.decrementAndGet();
         ByteBuf buffer = channel.alloc().buffer(messages.size() * 256);
         try {
             int at;
