@@ -5,7 +5,9 @@ It registers, perceives every few ticks, walks to the nearest fruit its gripper 
 it and grasps it; when it sees none it wanders. It plays in both realtime and lockstep games. In
 lockstep it ends its setup with EndTurn, acts only on the perception of the tick whose turn is
 open and then ends that turn, and draws its random numbers from the seed the server gives it:
-the same seed and agents then play the same game again.
+the same seed and agents then play the same game again. It reads the lean form of the protocol
+(section 16): each perception is one LeanPerception line of whole centimetres and milliradians,
+and an accepted move is not answered, so it times its walks itself.
 
     python3 orchard_agent.py --host localhost --port 7557 --name Pyro
 """
@@ -20,6 +22,16 @@ BODY = {"radius": 0.45, "height": 1.7, "maxSpeed": 8.0,
         "gripper": {"part": "hands", "reach": 0.7, "minHeight": 0.0, "maxHeight": 2.2},
         "sight": {"range": 40.0, "fieldOfView": math.pi * 1.5}}
 PERCEIVE_EVERY = 4
+FRUIT_RADIUS = {"tomato": 0.15, "banana": 0.25, "coconut": 0.35}
+
+
+def units(centimetres):
+    return centimetres / 100
+
+
+def radians(milliradians):
+    """3142 milliradians stands for pi itself."""
+    return math.pi if milliradians == 3142 else milliradians / 1000
 
 
 class Connection:
@@ -61,9 +73,10 @@ def heading_towards(dx, dz):
 
 
 class Agent:
-    def __init__(self, connection, name, seed):
+    def __init__(self, connection, name, seed, tick_rate):
         self.c = connection
         self.name = name
+        self.tick_rate = tick_rate
         self.random = random.Random(seed)
         self.position = None
         self.heading = 0.0
@@ -82,11 +95,17 @@ class Agent:
         return g["minHeight"] <= fruit["position"]["y"] <= g["maxHeight"]
 
     def on_perception(self, p, tick):
-        self.position = p["position"]
-        self.heading = p["heading"]
+        x, y, z = p["position"][:3]
+        self.position = {"x": units(x), "y": units(y), "z": units(z)}
+        self.heading = radians(p["heading"])
         if tick < self.walking_until:
             return
-        fruit = [f for f in p["fruit"] if self.graspable_height(f) and f["id"] not in self.given_up]
+        seen = []
+        for f in p["fruit"]:
+            fruit_id, kind, fx, fy, fz, support = f[:6]
+            seen.append({"id": fruit_id, "radius": FRUIT_RADIUS.get(kind, 0.35),
+                         "position": {"x": units(fx), "y": units(fy), "z": units(fz)}})
+        fruit = [f for f in seen if self.graspable_height(f) and f["id"] not in self.given_up]
         if not fruit:
             self.wander(tick)
             return
@@ -110,6 +129,9 @@ class Agent:
                      "rotation": {"axis": {"x": 0, "y": 1, "z": 0},
                                   "angle": heading_towards(x - here["x"], z - here["z"])}})
         self.c.send({"type": "Move", "agent": self.name, "from": here, "to": {"x": x, "y": 0, "z": z}})
+        # No answer comes when the move is accepted: it takes distance / maxSpeed seconds.
+        duration = math.hypot(x - here["x"], z - here["z"]) / self.body["maxSpeed"]
+        self.walking_until = tick + int(math.ceil(duration * self.tick_rate)) + 1
 
     def wander(self, tick):
         angle = self.heading + self.random.uniform(-1.5, 1.5)
@@ -128,9 +150,10 @@ class Agent:
                 if self.failures[self.target] >= 3:
                     self.given_up.add(self.target)
             self.walking_until = -1
-        else:
+        elif r["outcome"] == "blocked":
+            # Another agent is in the way: the walk ends early, where the result says.
             self.position = r["position"]
-            self.walking_until = tick + int(math.ceil(r["duration"] * 20)) + 1
+            self.walking_until = tick + int(math.ceil(r["duration"] * self.tick_rate)) + 1
 
 
 def main():
@@ -142,7 +165,8 @@ def main():
     args = parser.parse_args()
 
     c = connect(args.host, args.port)
-    c.send({"type": "Hello", "protocolVersion": 2, "role": "agent", "client": "orchard_agent.py"})
+    c.send({"type": "Hello", "protocolVersion": 2, "role": "agent", "client": "orchard_agent.py",
+            "reads": ["LeanPerception"]})
     welcome = c.receive()
     if welcome is None:
         sys.exit(f"orchard_agent.py: {args.host}:{args.port} closed the connection before its welcome")
@@ -152,7 +176,7 @@ def main():
     open_turn = None        # lockstep: the tick whose perception we wait for before ending its turn
     next_perception = None  # the tick of our next perception, once the first one came
     c.send({"type": "Register", "name": args.name, "body": BODY})
-    agent = Agent(c, args.name, args.seed)
+    agent = Agent(c, args.name, args.seed, welcome["tickRate"])
     tick = welcome["tick"]
     while True:
         m = c.receive()
@@ -178,14 +202,15 @@ def main():
                 open_turn = tick  # our perception follows: act on it, then end the turn
             else:
                 c.send({"type": "EndTurn", "tick": tick})
-        elif kind == "Perception" and m["agent"] == args.name:
+        elif kind == "LeanPerception" and m["agent"] == args.name:
             next_perception = m["tick"] + PERCEIVE_EVERY
             if not lockstep or open_turn == m["tick"]:
                 agent.on_perception(m, tick)
             else:
                 # The turn was already over: acting now would count in whichever tick it arrived.
-                agent.position = m["position"]
-                agent.heading = m["heading"]
+                x, y, z = m["position"][:3]
+                agent.position = {"x": units(x), "y": units(y), "z": units(z)}
+                agent.heading = radians(m["heading"])
             if open_turn == m["tick"]:
                 c.send({"type": "EndTurn", "tick": tick})
                 open_turn = None

@@ -16,7 +16,10 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The protocol is open to any language: the Python example agent plays a real game and scores. */
+/**
+ * The protocol is open to any language: the Python example agent, which reads the lean form alone
+ * (a perception as one LeanPerception line, no answer to an accepted move), plays a real game and scores.
+ */
 class PythonAgentTest {
 
     @TempDir

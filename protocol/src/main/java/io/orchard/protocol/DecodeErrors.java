@@ -1,5 +1,6 @@
 package io.orchard.protocol;
 
+import com.fasterxml.jackson.annotation.JsonFormat;
 import com.fasterxml.jackson.annotation.JsonValue;
 import io.orchard.protocol.message.ErrorCode;
 import java.lang.reflect.InvocationTargetException;
@@ -297,6 +298,9 @@ final class DecodeErrors {
     static String path(List<JacksonException.Reference> references) {
         StringBuilder path = new StringBuilder();
         for (JacksonException.Reference reference : references) {
+            if (reference.getPropertyName() != null && writtenAsArray(reference.from())) {
+                continue; // the element's index follows, and the check's text names the component
+            }
             if (reference.getPropertyName() != null) {
                 if (path.length() > 0) {
                     path.append('.');
@@ -307,6 +311,13 @@ final class DecodeErrors {
             }
         }
         return path.toString();
+    }
+
+    /** Whether the value is a record written as an array of its components (a tuple of the lean form). */
+    private static boolean writtenAsArray(Object from) {
+        Class<?> type = from instanceof Class<?> c ? c : from == null ? null : from.getClass();
+        JsonFormat format = type == null ? null : type.getAnnotation(JsonFormat.class);
+        return format != null && format.shape() == JsonFormat.Shape.ARRAY;
     }
 
     private static String join(String path, String field) {

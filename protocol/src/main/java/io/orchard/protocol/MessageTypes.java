@@ -1,6 +1,7 @@
 package io.orchard.protocol;
 
 import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.LeanPerceptionMessage;
 import io.orchard.protocol.message.Message;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.RegisterMessage;
@@ -25,7 +26,7 @@ public final class MessageTypes {
      * snapshot of a whole world, and a perception in a crowded part of a large world.
      */
     private static final Set<Class<? extends Message>> LARGE = Set.of(RegisterMessage.class, AgentAddedMessage.class,
-            WorldSnapshotMessage.class, PerceptionMessage.class);
+            WorldSnapshotMessage.class, PerceptionMessage.class, LeanPerceptionMessage.class);
 
     private MessageTypes() {}
 

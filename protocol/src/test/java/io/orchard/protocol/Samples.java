@@ -16,6 +16,17 @@ final class Samples {
     static final Vec3 THERE = new Vec3(20, 0, -35);
     static final List<Score> SCORES = List.of(new Score("Guppy", 5, 3), new Score("Bunny", 1, 1));
 
+    static final PerceptionMessage PERCEPTION = new PerceptionMessage(43, "Guppy", HERE, 0.25,
+            List.of(new PerceivedObject("T17", ObjectKind.TREE, new RelativePosition(6.5, -0.4), 1.5, 6),
+                    new PerceivedObject("D2", ObjectKind.TABLE, new RelativePosition(12, 0.8), 1, 0.9)),
+            List.of(new PerceivedAgent("Bunny", new RelativePosition(4, 1.2), -0.3, 0.4)),
+            List.of(new PerceivedFruit("F12", FruitKind.BANANA, new Vec3(14, 1.15, -38), 0.25, "D2"),
+                    new PerceivedFruit("F13", FruitKind.TOMATO, new Vec3(10, 0.15, -44), 0.15, null)));
+    static final LandmarkPerceptionMessage LANDMARKS = new LandmarkPerceptionMessage(43, "Guppy",
+            new PerceivedRiver(new RelativePosition(18, 0.1), 1.4),
+            List.of(new PerceivedBridge("B1", new RelativePosition(20, 0.3), new RelativePosition(28, 0.25), 4)));
+    static final CastlePerceptionMessage CASTLE = new CastlePerceptionMessage(43, "Guppy", Sector.SOUTH_WEST);
+
     private static final List<Message> ALL = List.of(
             new HelloMessage(1, 2, Role.AGENT, "guppy-controller", null),
             new RegisterMessage(2, "Guppy", BODY, ModelSpec.bundled("figure")),
@@ -40,16 +51,10 @@ final class Samples {
             new RegisteredMessage(2, "Guppy", BODY, HERE, 0.0, "3f9c2a7e41b8d05c6e1f9a2b7c4d8e0f", 8071234567890123456L),
             new ActionResultMessage(6, "Guppy", "Move", Outcome.REJECTED, "path crosses tree T17", null, 0),
             new GraspResultMessage(11, "Guppy", "F12", true, null, 2),
-            new PerceptionMessage(43, "Guppy", HERE, 0.25,
-                    List.of(new PerceivedObject("T17", ObjectKind.TREE, new RelativePosition(6.5, -0.4), 1.5, 6),
-                            new PerceivedObject("D2", ObjectKind.TABLE, new RelativePosition(12, 0.8), 1, 0.9)),
-                    List.of(new PerceivedAgent("Bunny", new RelativePosition(4, 1.2), -0.3, 0.4)),
-                    List.of(new PerceivedFruit("F12", FruitKind.BANANA, new Vec3(14, 1.15, -38), 0.25, "D2"),
-                            new PerceivedFruit("F13", FruitKind.TOMATO, new Vec3(10, 0.15, -44), 0.15, null))),
-            new LandmarkPerceptionMessage(43, "Guppy",
-                    new PerceivedRiver(new RelativePosition(18, 0.1), 1.4),
-                    List.of(new PerceivedBridge("B1", new RelativePosition(20, 0.3), new RelativePosition(28, 0.25), 4))),
-            new CastlePerceptionMessage(43, "Guppy", Sector.SOUTH_WEST),
+            PERCEPTION,
+            LANDMARKS,
+            CASTLE,
+            LeanPerceptionMessage.of(PERCEPTION, LANDMARKS, CASTLE),
             new FruitEatenMessage(44, "F12", FruitKind.BANANA, "Guppy"),
             new TickMessage(44, 2.2),
             new GameStartedMessage(0, 1998, 30, 180),

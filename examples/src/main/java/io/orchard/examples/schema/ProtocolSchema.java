@@ -1,6 +1,7 @@
 package io.orchard.examples.schema;
 
 import com.fasterxml.classmate.ResolvedType;
+import com.fasterxml.jackson.annotation.JsonFormat;
 import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.annotation.JsonValue;
 import com.github.victools.jsonschema.generator.CustomDefinition;
@@ -52,6 +53,11 @@ import tools.jackson.databind.node.ObjectNode;
  *   <li>a component is required unless it is annotated {@link Nullable}, and then it may also be null;</li>
  *   <li>{@code int} and {@code long} are integers, {@code double} a number, a {@code List} an array;</li>
  *   <li>an enum is a string, one of its wire names (the value of its {@link JsonValue} method);</li>
+ *   <li>a record written as an array ({@link JsonFormat} with {@code Shape.ARRAY}, the tuples of the
+ *       lean form) is an array whose {@code prefixItems} are its components in declaration order (each
+ *       titled with the component's name), all
+ *       of them present, a {@link Nullable} one possibly null; elements after them are allowed, as
+ *       decoders ignore them;</li>
  *   <li>a getter the codec writes besides the components (a public {@code isX()} or {@code getX()})
  *       is an optional, read-only property: decoders ignore it.</li>
  *   <li>each field carries the constraints docs/protocol.md states for it ({@link Constraints}): bounds,
@@ -172,6 +178,7 @@ public final class ProtocolSchema {
                 .without(Option.FLATTENED_ENUMS, Option.SCHEMA_VERSION_INDICATOR);
         builder.forTypesInGeneral()
                 .withCustomDefinitionProvider(ProtocolSchema::enumOfWireNames)
+                .withCustomDefinitionProvider(ProtocolSchema::tupleOfComponents)
                 .withPropertySorter(Comparator.comparingInt(ProtocolSchema::position)
                         .thenComparing(MemberScope::getSchemaPropertyName));
         builder.forFields()
@@ -193,6 +200,31 @@ public final class ProtocolSchema {
         for (Object constant : erased.getEnumConstants()) {
             values.add(wireName((Enum<?>) constant));
         }
+        return new CustomDefinition(definition);
+    }
+
+    /** A record written as an array: its components, in order, as the array's first elements. */
+    private static CustomDefinition tupleOfComponents(ResolvedType type, SchemaGenerationContext context) {
+        Class<?> erased = type.getErasedType();
+        JsonFormat format = erased.getAnnotation(JsonFormat.class);
+        if (!erased.isRecord() || format == null || format.shape() != JsonFormat.Shape.ARRAY) {
+            return null;
+        }
+        ObjectNode definition = context.getGeneratorConfig().createObjectNode().put("type", "array");
+        ArrayNode items = definition.putArray("prefixItems");
+        for (RecordComponent component : erased.getRecordComponents()) {
+            // The reference is filled in when the definitions are collected: it is added as it is, titled.
+            ObjectNode item = context.createDefinitionReference(context.getTypeContext().resolve(
+                    component.getGenericType()));
+            if (component.isAnnotationPresent(Nullable.class)) {
+                ObjectNode nullable = context.getGeneratorConfig().createObjectNode();
+                nullable.putArray("anyOf").add(item).add(context.getGeneratorConfig().createObjectNode()
+                        .put("type", "null"));
+                item = nullable;
+            }
+            items.add(item.put("title", component.getName()));
+        }
+        definition.put("minItems", erased.getRecordComponents().length);
         return new CustomDefinition(definition);
     }
 

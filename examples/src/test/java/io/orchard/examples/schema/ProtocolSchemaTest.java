@@ -229,8 +229,14 @@ class ProtocolSchemaTest {
                 }
             }
         } else if (value.isArray()) {
+            JsonNode prefix = definition.get("prefixItems");
             for (int i = 0; i < value.size(); i++) {
-                collectUndeclared(value.get(i), definition.get("items"), path + "[" + i + "]", missing);
+                JsonNode element = prefix != null && i < prefix.size() ? prefix.get(i) : definition.get("items");
+                if (element == null) {
+                    missing.add(path + "[" + i + "]");
+                } else {
+                    collectUndeclared(value.get(i), element, path + "[" + i + "]", missing);
+                }
             }
         }
     }

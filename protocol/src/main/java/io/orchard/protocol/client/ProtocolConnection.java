@@ -6,9 +6,11 @@ import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.LeanPerceptionMessage;
 import io.orchard.protocol.message.Reply;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.Form;
 import io.orchard.protocol.value.Role;
 import java.io.BufferedOutputStream;
 import java.io.IOException;
@@ -21,8 +23,11 @@ import java.net.SocketTimeoutException;
 import java.net.UnknownHostException;
 import java.time.Duration;
 import java.util.Locale;
+import java.util.EnumSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -35,7 +40,10 @@ import java.util.function.LongFunction;
  * message with the next {@code seq}.
  *
  * <p>{@link #connect} performs the handshake before it returns: it sends {@code Hello} and waits for
- * {@code Welcome}. Sending is thread-safe. The listener is called on the reader thread, one message
+ * {@code Welcome}. An agent control client reads the lean form of perceptions ({@link Form}): the
+ * server sends each perception as one short {@code LeanPerception} line, which the connection hands
+ * on as the {@code Perception}, {@code LandmarkPerception} and {@code CastlePerception} it stands
+ * for, so that a listener sees the same messages whichever form travelled. Sending is thread-safe. The listener is called on the reader thread, one message
  * at a time, in the order the server sent them; it should hand long work to another thread.
  *
  * <pre>{@code
@@ -102,18 +110,37 @@ public final class ProtocolConnection implements AutoCloseable {
     }
 
     /**
-     * Connects to a server that requires a token and performs the handshake.
+     * Connects to a server that requires a token and performs the handshake. An agent control client
+     * reads perceptions in the lean form and still has its accepted moves answered
+     * ({@link Form#LEAN_PERCEPTION}, {@link Form#ACCEPTED_MOVES}); a viewer asks for no other form.
      *
      * @param token the server's shared secret, or null when it requires none
      * @see #connect(String, int, Role, String, Listener)
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
                                              Listener listener) throws IOException {
+        return connect(host, port, role, clientName, token, role == Role.AGENT
+                ? EnumSet.of(Form.LEAN_PERCEPTION, Form.ACCEPTED_MOVES) : EnumSet.noneOf(Form.class), listener);
+    }
+
+    /**
+     * Connects to a server, asking for these forms of its lines, and performs the handshake. Without
+     * {@link Form#ACCEPTED_MOVES} beside {@link Form#LEAN_PERCEPTION} an accepted move has no reply,
+     * so that a {@link #request} of a {@code Move} completes only when it is blocked or rejected.
+     *
+     * @param token the server's shared secret, or null when it requires none
+     * @param reads the forms to ask for besides the ordinary lines; empty for none
+     * @see #connect(String, int, Role, String, Listener)
+     */
+    public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
+                                             Set<Form> reads, Listener listener) throws IOException {
         Objects.requireNonNull(listener, "listener");
         // Made before connecting: the server's handshake deadline runs from the connection, and a
         // cold JVM's first codec and first encoding can take seconds on a busy machine.
+        List<String> forms = reads.isEmpty() ? null : Form.names(reads);
         MessageCodec codec = new MessageCodec();
-        byte[] hello = codec.encodeLine(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
+        byte[] hello = codec.encodeLine(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token, null,
+                forms));
         Socket socket = new Socket();
         try {
             socket.setTcpNoDelay(true);
@@ -271,7 +298,13 @@ public final class ProtocolConnection implements AutoCloseable {
                 waiting.complete(reply);
             }
         }
-        listener.onMessage(message);
+        if (message instanceof LeanPerceptionMessage lean) {
+            listener.onMessage(lean.toPerception());
+            listener.onMessage(lean.toLandmarks());
+            listener.onMessage(lean.toCastle());
+        } else {
+            listener.onMessage(message);
+        }
     }
 
     private void shutdown(Throwable cause) {

@@ -8,7 +8,11 @@ import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.HelloMessage;
+import io.orchard.protocol.message.LandmarkPerceptionMessage;
+import io.orchard.protocol.message.LeanPerceptionMessage;
+import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.MoveMessage;
 import io.orchard.protocol.message.Reply;
 import io.orchard.protocol.message.ServerMessage;
@@ -16,8 +20,15 @@ import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Form;
+import io.orchard.protocol.value.FruitKind;
+import io.orchard.protocol.value.ObjectKind;
 import io.orchard.protocol.value.Outcome;
+import io.orchard.protocol.value.PerceivedFruit;
+import io.orchard.protocol.value.PerceivedObject;
+import io.orchard.protocol.value.RelativePosition;
 import io.orchard.protocol.value.Role;
+import io.orchard.protocol.value.Sector;
 import io.orchard.protocol.value.Vec3;
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -29,7 +40,9 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -107,6 +120,50 @@ class ProtocolConnectionTest {
             assertThat(heard.poll(5, TimeUnit.SECONDS)).isInstanceOf(TickMessage.class);
         }
         assertThat(received.get(0)).startsWith("{\"type\":\"Hello\"");
+    }
+
+    @Test
+    void anAgentReadsTheLeanFormAndHearsTheThreePerceptionMessagesItStandsFor() throws Exception {
+        PerceptionMessage seen = new PerceptionMessage(7, "Guppy", new Vec3(1.25, 0, -4.5), 0.25,
+                List.of(new PerceivedObject("T17", ObjectKind.TREE, new RelativePosition(6.5, -0.4), 1.5, 6)),
+                List.of(), List.of(new PerceivedFruit("F1", FruitKind.BANANA, new Vec3(2, 0.25, -5), 0.25, null)));
+        LandmarkPerceptionMessage landmarks = new LandmarkPerceptionMessage(7, "Guppy", null, List.of());
+        CastlePerceptionMessage castle = new CastlePerceptionMessage(7, "Guppy", Sector.EAST);
+        int port = peer((message, out) -> {
+            if (message instanceof HelloMessage hello) {
+                write(out, welcome(hello.seq()));
+                write(out, LeanPerceptionMessage.of(seen, landmarks, castle));
+            }
+        });
+        BlockingQueue<ServerMessage> heard = new LinkedBlockingQueue<>();
+        try (ProtocolConnection connection = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", heard::add)) {
+            assertThat(heard.poll(5, TimeUnit.SECONDS)).isEqualTo(seen);
+            assertThat(heard.poll(5, TimeUnit.SECONDS)).isEqualTo(landmarks);
+            assertThat(heard.poll(5, TimeUnit.SECONDS)).isEqualTo(castle);
+        }
+        HelloMessage hello = (HelloMessage) codec.decodeClient(received.get(0));
+        assertThat(hello.reads()).containsExactly("LeanPerception", "AcceptedMoves");
+    }
+
+    @Test
+    void aViewerAndAClientThatAsksForNoFormSendTheOrdinaryHello() throws Exception {
+        for (Role role : Role.values()) {
+            received.clear();
+            int port = peer((message, out) -> {
+                if (message instanceof HelloMessage hello) {
+                    write(out, welcome(hello.seq()));
+                }
+            });
+            Set<Form> none = EnumSet.noneOf(Form.class);
+            try (ProtocolConnection connection = role == Role.AGENT
+                    ? ProtocolConnection.connect("127.0.0.1", port, role, "test", null, none, message -> { })
+                    : ProtocolConnection.connect("127.0.0.1", port, role, "test", message -> { })) {
+                assertThat(connection.isOpen()).isTrue();
+            }
+            assertThat(received.get(0)).isEqualTo("{\"type\":\"Hello\",\"seq\":0,\"protocolVersion\":2,\"role\":\""
+                    + role.wireName() + "\",\"client\":\"test\"}");
+            server.close();
+        }
     }
 
     @Test

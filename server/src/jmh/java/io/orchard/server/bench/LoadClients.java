@@ -22,6 +22,8 @@ final class LoadClients {
         final LongAdder agentLinesReceived = new LongAdder();
         final LongAdder viewerLinesReceived = new LongAdder();
         final LongAdder viewerBytesReceived = new LongAdder();
+        final LongAdder agentBytesReceived = new LongAdder();
+        final LongAdder ticksStarted = new LongAdder();
         final LongAdder perceptions = new LongAdder();
         final LongAdder errors = new LongAdder();
         final LongAdder closed = new LongAdder();
@@ -41,6 +43,7 @@ final class LoadClients {
             agentLinesReceived.reset();
             viewerLinesReceived.reset();
             viewerBytesReceived.reset();
+            agentBytesReceived.reset();
             perceptions.reset();
             errors.reset();
             retries.reset();
@@ -49,11 +52,13 @@ final class LoadClients {
         }
 
         void tickStarted(long tick, long nanos) {
+            ticksStarted.increment();
             tickStarts.set((int) (tick & (tickStarts.length() - 1)), nanos);
         }
     }
 
     private static final byte[] POSITION = "\"position\":{\"x\":".getBytes(StandardCharsets.US_ASCII);
+    private static final byte[] LEAN_POSITION = "\"position\":[".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] Z = "\"z\":".getBytes(StandardCharsets.US_ASCII);
     private static final byte[] TICK = "\"tick\":".getBytes(StandardCharsets.US_ASCII);
     private static final String BODY = "{\"radius\":0.5,\"height\":1.5,\"maxSpeed\":10,\"gripper\":{\"part\":\"hands\","
@@ -61,21 +66,26 @@ final class LoadClients {
 
     private LoadClients() {}
 
-    /** An agent that asks for its perception every tick and, on each one, walks a step somewhere near. */
+    /**
+     * An agent that asks for its perception every tick and, on each one, walks a step somewhere near.
+     * A lean one reads the lean form: a perception in one line, and no answer to an accepted move.
+     */
     static final class Agent extends SimpleChannelInboundHandler<ByteBuf> {
 
         private final String name;
         private final Stats stats;
         private final double limit;
         private final SplittableRandom random;
+        private final boolean lean;
         private long seq = 1;
         private double x;
         private double z;
         private long requested;
         private boolean registered;
 
-        Agent(String name, Stats stats, double halfSize, long seed) {
+        Agent(String name, Stats stats, double halfSize, long seed, boolean lean) {
             this.name = name;
+            this.lean = lean;
             this.stats = stats;
             this.limit = halfSize - 2;
             this.random = new SplittableRandom(seed);
@@ -83,8 +93,9 @@ final class LoadClients {
 
         @Override
         public void channelActive(ChannelHandlerContext ctx) {
-            send(ctx, "{\"type\":\"Hello\",\"seq\":" + seq++ + ",\"protocolVersion\":1,\"role\":\"agent\","
-                    + "\"client\":\"load\"}\n");
+            send(ctx, "{\"type\":\"Hello\",\"seq\":" + seq++ + (lean
+                    ? ",\"protocolVersion\":2,\"role\":\"agent\",\"client\":\"load\",\"reads\":[\"LeanPerception\"]}\n"
+                    : ",\"protocolVersion\":1,\"role\":\"agent\",\"client\":\"load\"}\n"));
             // As a real agent would: ask again when a perception is a second late (a reply that came
             // after its tick ended still counts, so this is rare).
             ctx.executor().scheduleAtFixedRate(() -> {
@@ -100,9 +111,10 @@ final class LoadClients {
         protected void channelRead0(ChannelHandlerContext ctx, ByteBuf line) {
             long now = System.nanoTime();
             stats.agentLinesReceived.increment();
+            stats.agentBytesReceived.add(line.readableBytes() + 1);
             String type = typeOf(line);
             switch (type) {
-                case "Perception" -> {
+                case "Perception", "LeanPerception" -> {
                     long tick = number(line, TICK, 0).longValue();
                     stats.perceptions.increment();
                     if (stats.measuring) {
@@ -149,6 +161,16 @@ final class LoadClients {
         }
 
         private void readPosition(ByteBuf line) {
+            int lean = indexOf(line, LEAN_POSITION, 0);
+            if (lean >= 0) {
+                int start = line.readerIndex() + lean + LEAN_POSITION.length;
+                int comma = line.indexOf(start, line.writerIndex(), (byte) ',');
+                int second = line.indexOf(comma + 1, line.writerIndex(), (byte) ',');
+                int end = line.indexOf(second + 1, line.writerIndex(), (byte) ']');
+                x = Integer.parseInt(line.toString(start, comma - start, StandardCharsets.US_ASCII)) / 100.0;
+                z = Integer.parseInt(line.toString(second + 1, end - second - 1, StandardCharsets.US_ASCII)) / 100.0;
+                return;
+            }
             int at = indexOf(line, POSITION, 0);
             if (at >= 0) {
                 x = number(line, POSITION, at).doubleValue();

@@ -171,7 +171,7 @@ final class FastLines {
         return out.writeByte(':');
     }
 
-    private static void integer(ByteBuf out, long value) {
+    static void integer(ByteBuf out, long value) {
         if (value == Long.MIN_VALUE) {
             ascii(out, Long.toString(value));
             return;

@@ -13,7 +13,6 @@ import io.orchard.server.sim.EncodedLine;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -21,10 +20,14 @@ import org.slf4j.LoggerFactory;
  * A client session over a Netty channel. What the simulation sends during a tick is collected here
  * and handed to the channel's I/O thread when the tick flushes ({@link TickWrites}), which encodes
  * it all into one buffer and queues it in the client's {@link Outbox}: a tick costs one write per
- * client rather than one per message, and no encoding on the tick's thread. The data of an agent's
+ * client rather than one per message, and no encoding on the tick's thread. What is flushed before
+ * the I/O thread took the previous flush joins it (the end of one tick and the start of the next
+ * often do), so a busy server makes fewer, larger writes. The data of an agent's
  * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
- * tick nor grow the server's memory.
+ * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
+ * three messages of each perception, which the simulation sends one after the other, as one
+ * {@code LeanPerception} line ({@link TickLines}), and no result for an accepted move unless it asked.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -38,19 +41,26 @@ final class NettySession implements ClientSession {
     private final long id;
     private final Role role;
     private final int version;
+    private final ClientForms forms;
     private final Channel channel;
     private final SessionContext shared;
     private final Outbox outbox;
     private final AtomicBoolean ended = new AtomicBoolean();
     private List<Object> batch = new ArrayList<>();
-    /** Ticks whose messages were handed to the I/O thread and not yet written. */
-    private final AtomicInteger unwritten = new AtomicInteger();
+    /** Guards what was handed to the I/O thread and not yet taken by it. */
+    private final Object handoff = new Object();
+    /** Messages handed over and not yet taken: a flush before the I/O thread takes them adds to them. */
+    private List<Object> waiting;
+    /** Flushes whose messages wait in {@link #waiting}. */
+    private int waitingFlushes;
 
     /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
-    NettySession(long id, Role role, int version, Channel channel, SessionContext shared, Outbox outbox) {
+    NettySession(long id, Role role, int version, ClientForms forms, Channel channel, SessionContext shared,
+                 Outbox outbox) {
         this.id = id;
         this.role = role;
         this.version = version;
+        this.forms = forms;
         this.channel = channel;
         this.shared = shared;
         this.outbox = outbox;
@@ -73,7 +83,7 @@ final class NettySession implements ClientSession {
 
     @Override
     public void send(ServerMessage message) {
-        if (isOpen()) {
+        if (isOpen() && forms.sends(message)) {
             batch.add(message);
         }
     }
@@ -95,13 +105,34 @@ final class NettySession implements ClientSession {
         if (!isOpen()) {
             return;
         }
-        if (unwritten.incrementAndGet() > MAX_UNWRITTEN_TICKS) {
-            // The I/O thread has not even encoded this client's last ticks: do not queue more.
-            unwritten.decrementAndGet();
-            outbox.cutSoon(MAX_UNWRITTEN_TICKS + " ticks of messages for this client are not yet written");
-            return;
+        synchronized (handoff) {
+            if (waiting != null) {
+                // The I/O thread has not taken the last flush yet: these go out with it, in one write.
+                if (waitingFlushes >= MAX_UNWRITTEN_TICKS) {
+                    outbox.cutSoon(MAX_UNWRITTEN_TICKS + " ticks of messages for this client are not yet written");
+                    return;
+                }
+                waiting.addAll(out);
+                waitingFlushes++;
+                return;
+            }
+            waiting = out;
+            waitingFlushes = 1;
         }
-        shared.writes().submit(channel.eventLoop(), () -> write(out));
+        shared.writes().submit(channel.eventLoop(), this::writeWaiting);
+    }
+
+    /** On the channel's I/O thread: takes what waits and writes it. */
+    private void writeWaiting() {
+        List<Object> messages;
+        synchronized (handoff) {
+            messages = waiting;
+            waiting = null;
+            waitingFlushes = 0;
+        }
+        if (messages != null) {
+            write(messages);
+        }
     }
 
     /**
@@ -109,22 +140,18 @@ final class NettySession implements ClientSession {
      * except the data of models, which go out from the copy every client shares.
      */
     private void write(List<Object> messages) {
-        unwritten.decrementAndGet();
         ByteBuf buffer = channel.alloc().buffer(messages.size() * 256);
         try {
-            for (Object message : messages) {
-                ServerMessage plain = message instanceof EncodedLine line ? line.message() : (ServerMessage) message;
-                if (plain instanceof AgentAddedMessage added && ModelLines.carriesData(added)) {
-                    ModelLines.Cut cut = ModelLines.cut(CODEC, added);
-                    outbox.add(buffer.writeBytes(cut.before()), false);
-                    outbox.add(shared.models().wire(added.agent().model().data()), true);
-                    buffer = channel.alloc().buffer(Math.max(256, cut.after().length));
-                    buffer.writeBytes(cut.after());
-                } else if (message instanceof EncodedLine line) {
-                    buffer.writeBytes(line.bytes());
-                } else if (!FastLines.write(plain, buffer)) {
-                    buffer.writeBytes(CODEC.encodeLine(plain));
-                }
+            int at;
+            for (int from = 0; (at = TickLines.write(messages, from, forms, buffer)) < messages.size(); from = at + 1) {
+                Object carrier = messages.get(at);
+                AgentAddedMessage added = (AgentAddedMessage) (carrier instanceof EncodedLine line ? line.message()
+                        : carrier);
+                ModelLines.Cut cut = ModelLines.cut(CODEC, added);
+                outbox.add(buffer.writeBytes(cut.before()), false);
+                outbox.add(shared.models().wire(added.agent().model().data()), true);
+                buffer = channel.alloc().buffer(Math.max(256, cut.after().length));
+                buffer.writeBytes(cut.after());
             }
         } catch (RuntimeException e) {
             buffer.release();

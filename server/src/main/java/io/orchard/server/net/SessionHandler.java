@@ -102,7 +102,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             pipeline.remove(IdleStateHandler.class);
         }
         long id = shared.sessionIds().incrementAndGet();
-        session = new NettySession(id, hello.role(), hello.protocolVersion(), ctx.channel(), shared, outbox);
+        session = new NettySession(id, hello.role(), hello.protocolVersion(), ClientForms.of(hello), ctx.channel(),
+                shared, outbox);
         ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()).forVersion(hello.protocolVersion()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);

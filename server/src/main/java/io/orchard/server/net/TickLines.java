@@ -1,0 +1,63 @@
+package io.orchard.server.net;
+
+import io.netty.buffer.ByteBuf;
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.CastlePerceptionMessage;
+import io.orchard.protocol.message.LandmarkPerceptionMessage;
+import io.orchard.protocol.message.PerceptionMessage;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.server.sim.EncodedLine;
+import java.util.List;
+
+/**
+ * Encodes what one client is sent in a tick, one line after the other, into one buffer, in the
+ * forms the client reads: a broadcast is copied from its shared bytes, a perception's three
+ * messages become one lean line for a client that reads the lean form ({@link LeanLines}), the
+ * lines that make most of the traffic are written directly ({@link FastLines}) and the rest by the
+ * codec. It stops before an {@code AgentAdded} with a model's data, which its caller writes from the
+ * copy every client shares. Stateless.
+ */
+final class TickLines {
+
+    private static final MessageCodec CODEC = new MessageCodec();
+
+    private TickLines() {}
+
+    /**
+     * Writes {@code messages} ({@link ServerMessage}s and {@link EncodedLine}s) from index
+     * {@code from} on, until the end or a message that {@link #carriesModel carries a model}.
+     *
+     * @return the index of the message it stopped at, or the number of messages
+     */
+    static int write(List<?> messages, int from, ClientForms forms, ByteBuf out) {
+        for (int i = from; i < messages.size(); i++) {
+            Object message = messages.get(i);
+            if (message instanceof EncodedLine line) {
+                if (carriesModel(line.message())) {
+                    return i;
+                }
+                out.writeBytes(line.bytes());
+            } else if (forms.leanPerception() && message instanceof PerceptionMessage seen && i + 2 < messages.size()
+                    && messages.get(i + 1) instanceof LandmarkPerceptionMessage landmarks
+                    && messages.get(i + 2) instanceof CastlePerceptionMessage castle) {
+                LeanLines.write(seen, landmarks, castle, out);
+                i += 2;
+            } else {
+                ServerMessage plain = (ServerMessage) message;
+                if (carriesModel(plain)) {
+                    return i;
+                }
+                if (!FastLines.write(plain, out)) {
+                    out.writeBytes(CODEC.encodeLine(plain));
+                }
+            }
+        }
+        return messages.size();
+    }
+
+    /** Whether the message is an {@code AgentAdded} whose model's data goes out from the shared copy. */
+    static boolean carriesModel(ServerMessage message) {
+        return message instanceof AgentAddedMessage added && ModelLines.carriesData(added);
+    }
+}
