@@ -1,6 +1,7 @@
 package io.orchard.examples.schema;
 
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.LeanUnits;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Nullable;
@@ -48,6 +49,11 @@ final class Constraints {
     private static final Set<String> FINITE = Set.of("x", "y", "z", "heading", "angle", "across", "maxHeight", "minX",
             "minZ", "maxX", "maxZ");
     private static final Set<String> COUNTS = Set.of("every", "points", "fruit", "fruitCount");
+    /** The lean form's whole numbers ({@code LeanUnits}): centimetres of 0 or more, of 1 or more, milliradians of a bearing, any. */
+    private static final Set<String> LEAN_DISTANCES = Set.of("distance", "distanceA", "distanceB");
+    private static final Set<String> LEAN_SIZES = Set.of("radius", "height", "width");
+    private static final Set<String> LEAN_BEARINGS = Set.of("bearing", "bearingA", "bearingB");
+    private static final Set<String> LEAN_ANY = Set.of("x", "y", "z", "heading", "across");
     private static final Set<String> POLYGONS = Set.of("footprint", "outline");
     private static final Map<Class<?>, String> BETWEEN_FIELDS = Map.of(
             io.orchard.protocol.value.Bounds.class, "minX < maxX and minZ < maxZ.",
@@ -60,6 +66,10 @@ final class Constraints {
 
     /** Writes the constraints of {@code record}'s components into its schema, {@code definition}. */
     static void apply(Class<?> record, ObjectNode definition) {
+        if (definition.get("prefixItems") instanceof ArrayNode items) {
+            tuple(record, items);
+            return;
+        }
         ObjectNode properties = (ObjectNode) definition.get("properties");
         for (RecordComponent component : record.getRecordComponents()) {
             ObjectNode property = (ObjectNode) properties.get(component.getName());
@@ -80,6 +90,18 @@ final class Constraints {
         }
     }
 
+    /** A record written as an array (the lean form's tuples): its components are the array's first items. */
+    private static void tuple(Class<?> record, ArrayNode items) {
+        RecordComponent[] components = record.getRecordComponents();
+        for (int i = 0; i < components.length; i++) {
+            ObjectNode item = (ObjectNode) items.get(i);
+            if (item.get("anyOf") instanceof ArrayNode either) {
+                item = (ObjectNode) either.get(0); // a Nullable component: its value, or null
+            }
+            constrain(record, components[i].getName(), components[i].getType(), item);
+        }
+    }
+
     private static void constrain(Class<?> record, String name, Class<?> type, ObjectNode property) {
         if (type == String.class) {
             text(record, name, property);
@@ -89,7 +111,7 @@ final class Constraints {
             long minimum;
             if (name.equals("seq") || name.equals("tick")) {
                 minimum = 0;
-            } else if (name.equals("seed")) {
+            } else if (name.equals("seed") || name.equals("heading")) {
                 minimum = Long.MIN_VALUE;
             } else {
                 throw unknown(record, name);
@@ -97,14 +119,20 @@ final class Constraints {
             property.put("minimum", minimum).put("maximum", Long.MAX_VALUE);
         } else if (type == int.class || type == Integer.class) {
             int minimum;
-            if (COUNTS.contains(name)) {
+            int maximum = Integer.MAX_VALUE;
+            if (COUNTS.contains(name) || LEAN_DISTANCES.contains(name)) {
                 minimum = 0;
-            } else if (name.equals("protocolVersion") || name.equals("tickRate")) {
+            } else if (name.equals("protocolVersion") || name.equals("tickRate") || LEAN_SIZES.contains(name)) {
                 minimum = 1;
+            } else if (LEAN_BEARINGS.contains(name)) {
+                minimum = 1 - (int) LeanUnits.PI_MILLIRADIANS;
+                maximum = (int) LeanUnits.PI_MILLIRADIANS;
+            } else if (LEAN_ANY.contains(name)) {
+                minimum = Integer.MIN_VALUE;
             } else {
                 throw unknown(record, name);
             }
-            property.put("minimum", minimum).put("maximum", Integer.MAX_VALUE);
+            property.put("minimum", minimum).put("maximum", maximum);
         } else if (List.class.isAssignableFrom(type)) {
             if (POLYGONS.contains(name)) {
                 property.put("minItems", 3);
