@@ -98,6 +98,12 @@ public final class GoalJson {
             }
         } else if (goal instanceof CarryOn) {
             node.put("goal", "carry-on");
+        } else if (goal instanceof Ask ask) {
+            node.put("goal", "ask");
+            node.put("topic", ask.topic().wireName());
+            if (ask.about() != null) {
+                node.set("about", tree(ask.about()));
+            }
         }
         return node;
     }
