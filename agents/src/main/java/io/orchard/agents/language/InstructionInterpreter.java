@@ -28,7 +28,7 @@ import org.slf4j.LoggerFactory;
  * <p>It never throws: any input, null, empty, very long or full of symbols, gives an
  * interpretation. Instances are immutable and safe to share between threads and agents.
  */
-public final class InstructionInterpreter {
+public final class InstructionInterpreter implements Interpreter {
 
     private static final Logger LOG = LoggerFactory.getLogger(InstructionInterpreter.class);
 
@@ -69,6 +69,7 @@ public final class InstructionInterpreter {
      * @param sentence an instruction in English; may be null, empty or anything else
      * @return the goal with its restatement, or an answer that says what was not understood
      */
+    @Override
     public Interpretation interpret(String sentence) {
         try {
             return understand(sentence);
