@@ -8,6 +8,7 @@ import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.Interpreter;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.ErrorMessage;
@@ -198,8 +199,11 @@ public abstract class AgentController {
     /** The game is over. */
     protected void onGameOver(GameOverMessage over) {}
 
-    /** Reads instructions into goals: the default understands simple English (docs/instructions.md), made once. */
-    protected InstructionInterpreter interpreter() {
+    /**
+     * Reads instructions into goals: the default, an {@link InstructionInterpreter}, understands simple
+     * English (docs/instructions.md) and is made once; override to plug in another {@link Interpreter}.
+     */
+    protected Interpreter interpreter() {
         return behaviours.interpreter();
     }
 

@@ -164,6 +164,9 @@ final class GameLoop {
         } else if (message instanceof FruitEatenMessage eaten) {
             if (situation.inWorld()) {
                 situation.memory().fruitEaten(eaten.fruit());
+                if (eaten.agent().equals(name)) {
+                    situation.memory().collected(eaten.kind());
+                }
             }
             guarded(() -> agent.onFruitEaten(eaten));
         } else if (message instanceof ScoreUpdateMessage update) {

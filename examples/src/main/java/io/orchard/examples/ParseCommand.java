@@ -1,5 +1,6 @@
 package io.orchard.examples;
 
+import io.orchard.agents.language.Ask;
 import io.orchard.agents.language.GoalJson;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
@@ -18,7 +19,8 @@ import picocli.CommandLine.Spec;
 /**
  * {@code ./orchard parse [--agents NAMES] [--notation] SENTENCE...}: shows what an agent makes of an
  * instruction in English, as {@link InstructionInterpreter} understands it: the goal as JSON and
- * the agent's one-line restatement, or the agent's answer when it does not understand. Either way
+ * the agent's one-line restatement (and, for a question, which question it is), or the agent's answer
+ * when it does not understand. Either way
  * the exit status is 0; only a command line without a sentence is a usage error.
  */
 @Command(name = "parse", abbreviateSynopsis = true, sortOptions = false,
@@ -70,6 +72,10 @@ public final class ParseCommand implements Callable<Integer> {
         interpretation.addressee().ifPresent(name -> out.println("Addressed to " + name + "."));
         if (interpretation instanceof Interpretation.Understood understood) {
             out.println(notation ? understood.goal().notation() : GoalJson.writePretty(understood.goal()));
+            if (understood.goal() instanceof Ask ask) {
+                out.println("A question (" + ask.topic().wireName() + "): the agent answers it from what it knows "
+                        + "and goes on with what it was doing.");
+            }
             out.println(understood.restatement());
         } else if (interpretation instanceof Interpretation.NotUnderstood notUnderstood) {
             out.println(notUnderstood.answer());

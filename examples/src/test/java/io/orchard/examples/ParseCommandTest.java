@@ -55,6 +55,13 @@ class ParseCommandTest {
     }
 
     @Test
+    void aQuestionSaysWhichQuestionItIs() {
+        assertThat(run("--notation", "how many fruits have you got?")).isZero();
+        assertThat(out()).isEqualTo("ask(collected)\nA question (collected): the agent answers it from what it knows "
+                + "and goes on with what it was doing.\nYou asked what fruit I have collected.\n");
+    }
+
+    @Test
     void severalWordsAreOneSentence() {
         assertThat(run("--notation", "go", "to", "the", "castle", "and", "then", "pick", "up", "a", "tomato")).isZero();
         assertThat(out()).isEqualTo("go-to(castle); collect(tomato)\nGoing to the castle, then picking up a tomato.\n");

@@ -4,6 +4,7 @@ import io.orchard.agents.behaviour.Harvester;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.behaviour.Status;
+import io.orchard.agents.language.Ask;
 import io.orchard.agents.language.CarryOn;
 import io.orchard.agents.language.Collect;
 import io.orchard.agents.language.ComeBack;
@@ -24,10 +25,12 @@ import io.orchard.agents.language.Turn;
 import io.orchard.agents.language.Wait;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.WorldMemory;
+import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -69,6 +72,10 @@ public final class Errands {
     private double askedAt;
     private Point2 origin;
     private Point2 previousOrigin;
+    private int stepsStarted;
+    private boolean stopped;
+    private String lastOutcome = "";
+    private final Answering answering;
 
     /** Errands for the agent {@code motor} drives and {@code memory} remembers for. */
     public Errands(WorldMemory memory, Motor motor) {
@@ -80,6 +87,39 @@ public final class Errands {
         this.kit = new Kit(memory, motor, planner);
         this.origin = memory.position();
         this.previousOrigin = origin;
+        this.answering = new Answering(kit, new Answering.State() {
+            @Override
+            public String doing() {
+                return Errands.this.doing();
+            }
+
+            @Override
+            public String lastOutcome() {
+                return lastOutcome;
+            }
+
+            @Override
+            public boolean stopped() {
+                return stopped;
+            }
+
+            @Override
+            public Map<FruitKind, Integer> collected() {
+                return memory.collected();
+            }
+        });
+    }
+
+    /** What the agent does for the person, in the words of its restatement ("going to the castle"); null when nothing. */
+    private @Nullable String doing() {
+        if (question != null) {
+            return "waiting for your answer: " + question.text();
+        }
+        if (goal == null || pursuit == null || goal instanceof Stop) {
+            return null;
+        }
+        String restated = goal.restatement();
+        return Character.toLowerCase(restated.charAt(0)) + restated.substring(1, restated.length() - 1);
     }
 
     /** The harvester the errands collect with: set its gesture to animate the grasp. */
@@ -107,7 +147,14 @@ public final class Errands {
      * person with one line, and starts it. {@link CarryOn} drops every goal.
      */
     public void take(Goal instructed) {
+        if (instructed instanceof Ask ask) {
+            kit.motor.say(answering.answer(ask)); // a question leaves the errand as it was
+            return;
+        }
         question = null;
+        stopped = instructed instanceof Stop;
+        stepsStarted = 0;
+        kit.grounder.told(kit.here(), kit.motor.heading());
         pursuit = null;
         goal = null;
         steps.clear();
@@ -179,6 +226,7 @@ public final class Errands {
             return true;
         }
         String outcome = pursuit.outcome();
+        lastOutcome = outcome;
         pursuit = null;
         goal = null;
         kit.navigator.reset();
@@ -201,6 +249,7 @@ public final class Errands {
             Goal step = steps.poll();
             String refused = refusal(step);
             if (refused != null) {
+                lastOutcome = refused;
                 kit.motor.say(refused + (steps.isEmpty() ? "" : " I'll go on with the rest."));
                 continue;
             }
@@ -215,6 +264,7 @@ public final class Errands {
                 return;
             }
             goal = step;
+            stepsStarted++;
             pursuit = pursuit(step, null);
             return;
         }
@@ -256,6 +306,9 @@ public final class Errands {
     private Pursuit pursuit(Goal step, @Nullable Known chosen) {
         double heading = kit.motor.heading();
         if (step instanceof GoTo goTo) {
+            if (goTo.destination().kind() == Reference.Kind.START) {
+                return WalkPursuit.to(kit, kit.grounder.start(), "I'm back where I started.");
+            }
             return goTo.destination().kind() == Reference.Kind.PLACE ? new GoingToPlace(kit, goTo.destination())
                     : new GoingTo(kit, goTo.destination(), chosen);
         }
@@ -268,8 +321,7 @@ public final class Errands {
         if (step instanceof Head head) {
             double way = Turning.heading(head.direction());
             if (head.distance() != null) {
-                return WalkPursuit.to(kit, Bearings.ahead(kit.here(), way, head.distance()), "Done: I went "
-                        + RelativeMove.metres(head.distance()) + " " + head.direction().wireName() + ".");
+                return Shortfall.walk(kit, way, head.distance(), head.direction().wireName());
             }
             return WalkPursuit.on(kit, way, head.direction().wireName());
         }
@@ -283,7 +335,8 @@ public final class Errands {
             };
         }
         if (step instanceof ComeBack) {
-            return WalkPursuit.to(kit, previousOrigin, "I'm back.");
+            // after other steps of the same instruction, back to where it was given; else to where the one before was
+            return WalkPursuit.to(kit, stepsStarted > 1 ? origin : previousOrigin, "I'm back.");
         }
         if (step instanceof Collect collect) {
             return new Gathering(kit, collect);

@@ -60,8 +60,9 @@ final class GoingToPlace implements Pursuit {
         Reference anchor = place.anchor();
         Place.Relation relation = place.relation();
         if (anchor == null) {
-            double heading = relation.sector() == null ? kit.motor.heading() : Turning.heading(relation.sector());
-            return WalkPursuit.to(kit, Bearings.ahead(here, heading, INTO), "");
+            double heading = relation.sector() == null ? kit.grounder.sideHeading(relation)
+                    : Turning.heading(relation.sector());
+            return WalkPursuit.to(kit, Bearings.ahead(kit.grounder.toldAt(), heading, INTO), "");
         }
         boolean river = anchor.kind() == Kind.RIVER || anchor.kind() == Kind.BRIDGE;
         if (river && (relation == Place.Relation.BEYOND || relation == Place.Relation.THIS_SIDE_OF)) {

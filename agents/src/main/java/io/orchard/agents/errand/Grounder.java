@@ -3,6 +3,7 @@ package io.orchard.agents.errand;
 import io.orchard.agents.language.Place;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Reference.Kind;
+import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.CastleEstimate;
 import io.orchard.agents.map.KnownBridge;
 import io.orchard.agents.map.KnownFruit;
@@ -39,10 +40,30 @@ final class Grounder {
     /** How far off a compass direction a thing may lie and still be "north of" something. */
     private static final double COMPASS_SLACK = Math.toRadians(60);
 
+    /** How far off its side a thing may lie and still be "on your left" (or right, ahead, behind). */
+    private static final double SIDE_SLACK = Math.toRadians(60);
+
     private final WorldMemory memory;
+    private Point2 toldAt;
+    private double toldHeading;
 
     Grounder(WorldMemory memory) {
         this.memory = memory;
+    }
+
+    /**
+     * Where the agent stood, and which way it faced, when it was told: "on your left", "near you"
+     * are taken from there, though it moves while it looks.
+     */
+    void told(Point2 where, double heading) {
+        this.toldAt = where;
+        this.toldHeading = heading;
+    }
+
+    /** Where the agent started the game: "where you started"; where it is, before it knows. */
+    Point2 start() {
+        Point2 start = memory.start();
+        return start != null ? start : memory.position();
     }
 
     /** Grounds the reference: the one it means, several to choose between, or none yet. */
@@ -75,6 +96,19 @@ final class Grounder {
         }
         Point2 here = memory.position();
         all.sort(Comparator.comparingDouble(k -> k.where().distance(here)));
+        Place place = reference.place();
+        if (place != null && place.anchor() != null && !all.isEmpty()
+                && (place.relation() == Place.Relation.CLOSEST_TO || place.relation() == Place.Relation.FARTHEST_FROM)) {
+            List<Known> anchors = select(place.anchor(), fitting(place.anchor()));
+            if (anchors.isEmpty()) {
+                return new ArrayList<>();
+            }
+            Comparator<Known> byAnchor = Comparator.comparingDouble(k -> anchors.stream()
+                    .mapToDouble(a -> a.where().distance(k.where()) - a.size()).min().orElseThrow());
+            Known picked = place.relation() == Place.Relation.CLOSEST_TO ? all.stream().min(byAnchor).orElseThrow()
+                    : all.stream().max(byAnchor).orElseThrow();
+            return new ArrayList<>(List.of(picked));
+        }
         return all;
     }
 
@@ -91,6 +125,18 @@ final class Grounder {
         }
         if (reference.distance() == Reference.Distance.NEAREST) {
             return List.of(fits.get(0));
+        }
+        if (reference.distance() != null) {
+            Comparator<Known> by = switch (reference.distance()) {
+                case HIGHEST, LOWEST -> Comparator.comparingDouble(k -> k.fruit() == null ? 0 : k.fruit().height());
+                case NORTHERNMOST, SOUTHERNMOST -> Comparator.comparingDouble(k -> k.where().z());
+                default -> Comparator.comparingDouble(k -> k.where().x());
+            };
+            boolean least = switch (reference.distance()) {
+                case LOWEST, NORTHERNMOST, WESTERNMOST -> true; // north is -z, west is -x
+                default -> false;
+            };
+            return List.of(least ? fits.stream().min(by).orElseThrow() : fits.stream().max(by).orElseThrow());
         }
         if (reference.size() == Reference.Size.LARGEST) {
             return List.of(fits.stream().max(Comparator.comparingDouble(Known::size)).orElseThrow());
@@ -112,8 +158,20 @@ final class Grounder {
             return k -> k.fruit() == null || k.fruit().onGround();
         }
         if (anchorReference == null) {
-            Point2 here = memory.position();
+            Point2 here = toldAt();
+            if (relation == Place.Relation.NEAR) {
+                return k -> k.where().distance(here) <= k.size() + NEAR; // "near you"
+            }
+            if (relation.fromHeading()) {
+                double facing = toldAt == null ? memory.heading() : toldHeading;
+                double side = sideHeading(relation) - facing;
+                return k -> k.where().distance(here) > 1e-6 && Math.abs(Bearings.normalise(
+                        Bearings.bearing(here, facing, k.where()) - side)) <= SIDE_SLACK;
+            }
             return k -> inSector(here, k.where(), relation.sector());
+        }
+        if (relation == Place.Relation.CLOSEST_TO || relation == Place.Relation.FARTHEST_FROM) {
+            return k -> true; // the one is picked among those that fit, in fitting()
         }
         List<Known> anchors = anchorReference.kind() == Kind.PLACE ? List.of()
                 : select(anchorReference, fitting(anchorReference));
@@ -194,6 +252,8 @@ final class Grounder {
             memory.obstacles().stream().filter(KnownObstacle::isTree)
                     .min(Comparator.comparingDouble(t -> t.centre().distance(here)))
                     .ifPresent(t -> found.add(Known.of(kind, "forest", t.centre(), t.radius())));
+        } else if (kind == Kind.START) {
+            found.add(Known.of(kind, "start", start(), 0));
         } else if (kind == Kind.AGENT) {
             for (SeenAgent agent : memory.agents()) {
                 if (reference.name() == null || agent.name().equalsIgnoreCase(reference.name())) {
@@ -202,6 +262,25 @@ final class Grounder {
             }
         }
         return found;
+    }
+
+    /**
+     * The heading of a side of the agent, as it faced when told: its heading for "ahead", a
+     * quarter turn more for "on your left" (headings grow to the left).
+     */
+    double sideHeading(Place.Relation relation) {
+        double facing = toldAt == null ? memory.heading() : toldHeading;
+        return switch (relation) {
+            case LEFT -> facing + Math.PI / 2;
+            case RIGHT -> facing - Math.PI / 2;
+            case BEHIND -> facing + Math.PI;
+            default -> facing;
+        };
+    }
+
+    /** Where the agent stood when told; where it stands, before it is told anything. */
+    Point2 toldAt() {
+        return toldAt == null ? memory.position() : toldAt;
     }
 
     /** Whether the person must be asked which one is meant when several fit: for landmarks, not for fruit or agents. */

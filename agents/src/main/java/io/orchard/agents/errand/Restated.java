@@ -23,6 +23,7 @@ final class Restated {
         return switch (known.kind()) {
             case AGENT -> known.id();
             case CASTLE, RIVER, FOREST -> "the " + known.kind().wireName();
+            case START -> "where I started";
             default -> "the " + known.kind().wireName() + " " + known.id();
         };
     }

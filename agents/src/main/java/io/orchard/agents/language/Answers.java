@@ -54,9 +54,23 @@ final class Answers {
     static final String TOO_MANY = "That is more fruit than the world holds; say 'all' to collect every one, "
             + "for example 'collect all bananas'.";
     static final String WHOLE = "I can collect only whole fruit; say how many, for example 'collect two bananas'.";
+    static final String NEGATIVE = "I can't do something a negative number of times; say how many, for example "
+            + "'collect two bananas'.";
+    static final String RULES = "I can't keep a rule that lasts, such as 'only bananas from now on' or 'don't go "
+            + "near the river', yet; tell me what to do now instead, for example 'collect the bananas'.";
+    static final String CONDITIONS = "I can't wait for something to happen before I act, as in 'when you see a "
+            + "banana, take it', yet; tell me what to do now, for example 'look for a banana and pick it up'.";
+    static final String DEMONSTRATIVE = "I don't know which one you mean by '%s'; name it another way, for example "
+            + "'the nearest table' or 'the table by the castle'.";
     static final String GENERIC_FAILURE = "Sorry, I could not make sense of that; " + CAN_DO + ".";
 
     private Answers() {
+    }
+
+    /** The answer to a sentence in another language, in English. */
+    static String otherLanguage(String language) {
+        return "I understand only English" + (language.startsWith("another") ? "" : ", and that looks like "
+                + language) + "; say, for example, 'pick up the banana' or 'go to the castle'.";
     }
 
     static String whom(List<String> agents) {

@@ -18,7 +18,8 @@ package io.orchard.agents.language;
  *       object, {@link LookFor} something, {@link Explore} an area;</li>
  *   <li>other agents: {@link Follow};</li>
  *   <li>autonomy: {@link Stop}, {@link Wait}, {@link CarryOn};</li>
- *   <li>several goals one after the other: {@link Sequence}.</li>
+ *   <li>several goals one after the other: {@link Sequence};</li>
+ *   <li>a question to answer at once, without dropping what the agent does: {@link Ask}.</li>
  * </ul>
  *
  * <p>Every goal is an immutable record whose constructor validates it; goals compare by value.
@@ -33,7 +34,7 @@ package io.orchard.agents.language;
  */
 public sealed interface Goal
         permits GoTo, Cross, Head, RelativeMove, ComeBack, Collect, Turn, Face, LookAt, LookFor, Explore, Follow,
-        Stop, Wait, CarryOn, Sequence {
+        Stop, Wait, CarryOn, Sequence, Ask {
 
     /**
      * The agent's one-line English restatement of this goal, for it to say back to the person, e.g.

@@ -29,6 +29,17 @@ public final class GoalJson {
         return MAPPER.writeValueAsString(tree(goal));
     }
 
+    /**
+     * The goal this JSON describes, as {@link #write} writes it: the inverse of {@code write}, so
+     * that {@code read(write(goal))} equals {@code goal}.
+     *
+     * @throws IllegalArgumentException when the text is not JSON or not a goal; the message names
+     *                                  the bad value and what was expected
+     */
+    public static Goal read(String json) {
+        return GoalReader.read(json);
+    }
+
     /** The goal as indented JSON, for people to read. */
     public static String writePretty(Goal goal) {
         return MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(tree(goal));
@@ -98,6 +109,12 @@ public final class GoalJson {
             }
         } else if (goal instanceof CarryOn) {
             node.put("goal", "carry-on");
+        } else if (goal instanceof Ask ask) {
+            node.put("goal", "ask");
+            node.put("topic", ask.topic().wireName());
+            if (ask.about() != null) {
+                node.set("about", tree(ask.about()));
+            }
         }
         return node;
     }

@@ -28,7 +28,7 @@ import org.slf4j.LoggerFactory;
  * <p>It never throws: any input, null, empty, very long or full of symbols, gives an
  * interpretation. Instances are immutable and safe to share between threads and agents.
  */
-public final class InstructionInterpreter {
+public final class InstructionInterpreter implements Interpreter {
 
     private static final Logger LOG = LoggerFactory.getLogger(InstructionInterpreter.class);
 
@@ -69,6 +69,7 @@ public final class InstructionInterpreter {
      * @param sentence an instruction in English; may be null, empty or anything else
      * @return the goal with its restatement, or an answer that says what was not understood
      */
+    @Override
     public Interpretation interpret(String sentence) {
         try {
             return understand(sentence);
@@ -91,6 +92,54 @@ public final class InstructionInterpreter {
             return new NotUnderstood(Answers.notUnderstood(quote(sentence), List.of(), Answers.CAN_DO), List.of(),
                     Optional.empty());
         }
+        if (sentence.matches("(?s).*(^|[^\\p{L}\\p{N}-])-\\s*\\d.*")) {
+            return new NotUnderstood(Answers.NEGATIVE, List.of(), Optional.empty());
+        }
+        Optional<Questions.Frame> question = Questions.read(tokens, lexicon);
+        if (question.isPresent()) {
+            Interpretation asked = asked(question.get(), sentence);
+            if (asked != null) {
+                return asked;
+            }
+        }
+        String rule = Rules.answer(tokens);
+        if (rule != null) {
+            return new NotUnderstood(rule, List.of(), Optional.empty());
+        }
+        Interpretation heard = command(tokens, sentence);
+        if (heard instanceof NotUnderstood notUnderstood) {
+            String language = Languages.other(tokens);
+            if (language != null) {
+                return new NotUnderstood(Answers.otherLanguage(language), notUnderstood.unknownWords(),
+                        notUnderstood.addressee());
+            }
+        }
+        return heard;
+    }
+
+    /** A question the agents answer, or null when its words do not make sense as one. */
+    private Interpretation asked(Questions.Frame frame, String sentence) {
+        Optional<String> addressee = Optional.ofNullable(frame.addressee());
+        Reference about = null;
+        if (!frame.about().isEmpty()) {
+            List<Lexeme> lexemes = lexicon.read(frame.about());
+            about = new Parser(lexicon).reference(lexemes);
+            if (about == null) {
+                List<String> unknown = lexemes.stream().filter(lexeme -> lexeme.is(Cat.UNKNOWN)).map(Lexeme::raw)
+                        .distinct().toList();
+                return unknown.isEmpty() ? null : new NotUnderstood(Answers.notUnderstood(quote(sentence), unknown,
+                        Answers.CAN_DO), unknown, addressee);
+            }
+            if (frame.topic() == Ask.Topic.COLLECTED && about.equals(Reference.to(Reference.Kind.FRUIT))) {
+                about = null; // "how many fruits": all of them
+            }
+        }
+        Ask ask = new Ask(frame.topic(), about);
+        return new Understood(ask, ask.restatement(), addressee);
+    }
+
+    /** The sentence read as a command. */
+    private Interpretation command(List<Tokenizer.Token> tokens, String sentence) {
         List<Lexeme> lexemes = lexicon.read(tokens);
         Parser parser = new Parser(lexicon);
         Goal goal = null;

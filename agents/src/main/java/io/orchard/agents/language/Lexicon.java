@@ -322,14 +322,21 @@ final class Lexicon {
                     "part", "parts");
             noun("world", "world", null, "map", null, "everywhere", null, "anywhere", null);
             noun("ground", "ground", null, "floor", null);
+            noun("start", "start-point", null);
         }
 
         private void modifiers() {
             words(Cat.SIZE, "big", "big", "bigger", "large", "larger", "huge", "giant", "great", "tall", "taller",
                     "massive", "enormous", "fat", "high");
             words(Cat.SIZE, "small", "small", "smaller", "little", "tiny", "short", "shorter", "mini", "wee", "low");
-            words(Cat.SIZE, "largest", "largest", "biggest", "tallest", "hugest", "greatest", "highest");
-            words(Cat.SIZE, "smallest", "smallest", "tiniest", "littlest", "shortest", "lowest");
+            words(Cat.SIZE, "largest", "largest", "biggest", "tallest", "hugest", "greatest");
+            words(Cat.SIZE, "smallest", "smallest", "tiniest", "littlest", "shortest");
+            words(Cat.DIST, "highest", "highest", "topmost", "uppermost");
+            words(Cat.DIST, "lowest", "lowest", "bottommost");
+            words(Cat.DIST, "northernmost", "northernmost", "northmost", "northern");
+            words(Cat.DIST, "southernmost", "southernmost", "southmost", "southern");
+            words(Cat.DIST, "easternmost", "easternmost", "eastmost", "eastern");
+            words(Cat.DIST, "westernmost", "westernmost", "westmost", "western");
             words(Cat.DIST, "nearest", "nearest", "closest", "nearer", "closer");
             words(Cat.DIST, "farthest", "farthest", "furthest", "farther", "further", "remotest");
             String[] numbers = {"zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
@@ -354,10 +361,10 @@ final class Lexicon {
             words(Cat.DET, "the", "the", "teh", "hte", "whatever", "whichever", "this", "that", "these", "those",
                     "my", "your", "our", "its", "their");
             words(Cat.DET, "a", "a", "an", "any", "another");
-            words(Cat.DIR, "north", "north", "northward", "northwards", "northern", "northerly");
-            words(Cat.DIR, "south", "south", "southward", "southwards", "southern", "southerly");
-            words(Cat.DIR, "east", "east", "eastward", "eastwards", "eastern", "easterly");
-            words(Cat.DIR, "west", "west", "westward", "westwards", "western", "westerly");
+            words(Cat.DIR, "north", "north", "northward", "northwards", "northerly");
+            words(Cat.DIR, "south", "south", "southward", "southwards", "southerly");
+            words(Cat.DIR, "east", "east", "eastward", "eastwards", "easterly");
+            words(Cat.DIR, "west", "west", "westward", "westwards", "westerly");
             words(Cat.DIR, "north-east", "northeast", "northeastern", "northeastward");
             words(Cat.DIR, "north-west", "northwest", "northwestern", "northwestward");
             words(Cat.DIR, "south-east", "southeast", "southeastern", "southeastward");
@@ -391,7 +398,8 @@ final class Lexicon {
             words(Cat.PREP, "around", "around", "round", "about");
             words(Cat.PREP, "through", "through", "thru");
             for (String prep : List.of("of", "for", "with", "up", "down", "back", "away", "out", "over", "across",
-                    "after", "before", "at", "by", "via", "until", "till", "this-side", "on-ground")) {
+                    "after", "before", "at", "by", "via", "until", "till", "this-side", "on-ground", "on-left", "on-right",
+                    "in-front", "behind-me", "near-me")) {
                 put(prep, Cat.PREP, prep);
             }
             words(Cat.HERE, "here", "here");
@@ -507,21 +515,35 @@ final class Lexicon {
             phrase("you come across", "");
             phrase("you know of", "");
             phrase("in sight", "");
-            phrase("where you started", "home");
-            phrase("where you began", "home");
+            for (String start : List.of("where you started", "where you began", "where you started from",
+                    "where you began from", "your starting point", "the starting point", "the start",
+                    "your start", "where you started the game", "your starting place", "the starting place")) {
+                phrase(start, "start-point");
+            }
+            // places relative to the agent, from its heading
+            for (String side : List.of("left", "right")) {
+                for (String said : List.of("at your %s", "on your %s hand side",
+                        "on your %s side", "to the %s of you", "on the %s of you", "on the %s side of you")) {
+                    phrase(String.format(said, side), "on-" + side);
+                }
+            }
+            for (String said : List.of("in front of you", "ahead of you", "in front of yourself")) {
+                phrase(said, "in-front");
+            }
+            for (String said : List.of("near you", "around you", "close to you", "next to you", "by you",
+                    "beside you", "near yourself", "around yourself", "close by you", "near me", "around me",
+                    "close to me", "next to me")) {
+                phrase(said, "near-me");
+            }
             phrase("where you came from", "home");
             phrase("where you were", "home");
             phrase("where you were before", "home");
-            phrase("your starting point", "home");
-            phrase("the starting point", "home");
-            phrase("the start", "home");
-            phrase("your start", "home");
             phrase("the other way", "around");
             phrase("the opposite way", "around");
             phrase("the other direction", "around");
             phrase("the opposite direction", "around");
-            phrase("behind you", "back");
-            phrase("behind yourself", "back");
+            phrase("behind you", "behind-me");
+            phrase("behind yourself", "behind-me");
             phrase("as you were", "carry-on");
             phrase("do your thing", "carry-on");
             phrase("do your own thing", "carry-on");
@@ -607,7 +629,6 @@ final class Lexicon {
             phrase("i want", "fetch");
             phrase("i need", "fetch");
             phrase("i would like", "fetch");
-            phrase("to me", "");
             phrase("back to me", "");
             phrase("as many", "all");
             phrase("as much", "all");

@@ -64,6 +64,9 @@ final class Notation {
         if (goal instanceof CarryOn) {
             return "carry-on";
         }
+        if (goal instanceof Ask ask) {
+            return "ask(" + ask.topic().wireName() + (ask.about() == null ? "" : ", " + of(ask.about())) + ")";
+        }
         throw new IllegalArgumentException("no notation for " + goal);
     }
 

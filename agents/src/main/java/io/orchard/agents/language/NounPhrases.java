@@ -11,6 +11,7 @@ import static io.orchard.agents.language.Lexeme.Cat.NUMBER;
 import static io.orchard.agents.language.Lexeme.Cat.PREP;
 import static io.orchard.agents.language.Lexeme.Cat.PRON;
 import static io.orchard.agents.language.Lexeme.Cat.QUANT;
+import static io.orchard.agents.language.Lexeme.Cat.SIDE;
 import static io.orchard.agents.language.Lexeme.Cat.SIZE;
 import static io.orchard.agents.language.Lexeme.Cat.UNKNOWN;
 
@@ -77,6 +78,7 @@ final class NounPhrases {
         boolean some;
         Size size;
         Distance distance;
+        boolean any;
         Lexeme head;
         Reference ref;
         boolean plural;
@@ -106,10 +108,10 @@ final class NounPhrases {
                 count = number;
             } else if (some) {
                 count = 3;
-            } else if (distance != null || size == Size.LARGEST || size == Size.SMALLEST) {
+            } else if (distance != null || size == Size.LARGEST || size == Size.SMALLEST || picked(place)) {
                 count = 1;
             } else {
-                count = plural ? Collect.ALL : 1;
+                count = plural && (!any || head.raw().toLowerCase(Locale.ROOT).endsWith("s")) ? Collect.ALL : 1;
             }
             boolean explicit = number != null && number != 1 || all || some;
             boolean pronoun = head != null && head.is(PRON) && !head.is(PRON, "one");
@@ -118,13 +120,18 @@ final class NounPhrases {
     }
 
     /** Determiners and quantities: "the", "a", "all the", "every", "three of the", "some". */
-    private static void quantity(Cursor c, Parts parts) {
+    private void quantity(Cursor c, Parts parts) {
         while (!c.atEnd()) {
             Lexeme t = c.peek();
             if (t.is(DET)) {
                 c.next();
+                demonstrative(t, c);
                 if (t.is(DET, "a") && parts.number == null) {
-                    parts.number = 1.0;
+                    if (t.raw().equalsIgnoreCase("any")) {
+                        parts.any = true; // "any banana" is one, "any bananas" all that are found
+                    } else {
+                        parts.number = 1.0;
+                    }
                 }
             } else if (t.is(QUANT, "everything")) {
                 return; // the head
@@ -148,6 +155,28 @@ final class NounPhrases {
                 return;
             }
         }
+    }
+
+    /**
+     * "That table", "those trees": the person points at something the agent cannot see them point
+     * at, so unless the sentence named one of the kind before, the agent asks rather than guess.
+     */
+    private void demonstrative(Lexeme det, Cursor c) {
+        Lexeme next = c.peek();
+        if (!(det.raw().equalsIgnoreCase("that") || det.raw().equalsIgnoreCase("those")) || next == null
+                || !next.is(NOUN)) {
+            return;
+        }
+        Reference antecedent = context.antecedent;
+        if (antecedent == null || !antecedent.kind().wireName().equals(next.lemma())) {
+            throw Refusal.answer(String.format(Answers.DEMONSTRATIVE, det.raw() + " " + next.raw()));
+        }
+    }
+
+    /** Whether a place picks out one object of those that fit: "the fruit closest to the bridge". */
+    private static boolean picked(Place place) {
+        return place != null && (place.relation() == Relation.CLOSEST_TO
+                || place.relation() == Relation.FARTHEST_FROM);
     }
 
     /** Sizes, distances and a late number: "the nearest two big". */
@@ -222,20 +251,32 @@ final class NounPhrases {
             Reference antecedent = context.antecedent;
             if (m.is(DET) && next != null && (isRelation(next) || next.is(DIR) || next.is(DIST))) {
                 c.next(); // "that" of "the banana that is on the table"
-            } else if (m.is(DIST) && (next == null || next.is(ME) || next.isAny(PREP, "to", "near"))) {
+            } else if (m.is(DIST) && (next == null || next.is(ME) || next.isAny(PREP, "to", "near", "from")
+                    || (parts.place == null && (next.is(DET) || next.is(NOUN) || next.is(NAME))
+                    && (m.is(DIST, "nearest") || m.is(DIST, "farthest"))))) {
                 c.next();
-                parts.distance = Distance.valueOf(m.lemma().toUpperCase(Locale.ROOT));
-                if (c.peekIs(PREP, "to") || c.peekIs(PREP, "near")) {
+                Distance distance = Distance.valueOf(m.lemma().toUpperCase(Locale.ROOT));
+                if (c.peekIs(PREP, "to") || c.peekIs(PREP, "near") || c.peekIs(PREP, "from")) {
                     c.next();
                 }
                 if (c.peek() != null && c.peek().is(ME)) {
                     c.next(); // "the tree closest to me": measured from the agent anyway
-                } else if (!c.atEnd()) {
-                    parts.place = Place.of(Relation.NEAR, requiredAnchor(c)); // "the tree nearest to the castle"
+                    parts.distance = distance;
+                } else if (!c.atEnd() && parts.place == null && (distance == Distance.NEAREST
+                        || distance == Distance.FARTHEST)) {
+                    // "the fruit closest to the bridge": measured from the bridge, not from the agent
+                    parts.place = Place.of(distance == Distance.NEAREST ? Relation.CLOSEST_TO : Relation.FARTHEST_FROM,
+                            requiredAnchor(c));
+                } else {
+                    parts.distance = distance;
                 }
-            } else if (parts.place == null && isRelation(m) && (m.isAny(PREP, "on-ground", "beyond", "this-side")
+            } else if (parts.place == null && isRelation(m) && (m.isAny(PREP, "on-ground", "beyond", "this-side",
+                    "on-left", "on-right", "in-front", "behind-me", "near-me")
                     || (next != null && (startsNounPhrase(next) || next.is(DIR) || next.is(UNKNOWN))))) {
                 parts.place = place(c);
+            } else if (parts.place == null && m.isAny(SIDE, "left", "right") && m.raw().contains(" your ")) {
+                c.next(); // "the banana on your left"
+                parts.place = Place.of(m.is(SIDE, "left") ? Relation.LEFT : Relation.RIGHT, null);
             } else if (parts.place == null && m.is(DIR) && (next == null || next.is(PREP, "of") || !next.is(NOUN))) {
                 c.next();
                 parts.place = compass(m, c);
@@ -285,7 +326,7 @@ final class NounPhrases {
 
     static boolean isRelation(Lexeme t) {
         return t.isAny(PREP, "on", "on-ground", "in", "under", "from", "near", "by", "at", "around", "via", "beyond",
-                "across", "over", "through", "this-side");
+                "across", "over", "through", "this-side", "on-left", "on-right", "in-front", "behind-me", "near-me");
     }
 
     /** The place introduced by the relation word at the cursor. */
@@ -301,6 +342,16 @@ final class NounPhrases {
                 return Place.of(Relation.BEYOND, anchorOrRiver(c));
             case "this-side":
                 return Place.of(Relation.THIS_SIDE_OF, anchorOrRiver(c));
+            case "on-left":
+                return Place.of(Relation.LEFT, null);
+            case "on-right":
+                return Place.of(Relation.RIGHT, null);
+            case "in-front":
+                return Place.of(Relation.AHEAD, null);
+            case "behind-me":
+                return Place.of(Relation.BEHIND, null);
+            case "near-me":
+                return Place.of(Relation.NEAR, null);
             default:
                 break;
         }

@@ -91,6 +91,20 @@ final class Parser {
         return Sequence.of(goals);
     }
 
+    /** The reference these words make as one noun phrase ("the nearest banana"); null when they make none. */
+    Reference reference(List<Lexeme> lexemes) {
+        Cursor c = new Cursor(lexemes);
+        if (c.atEnd()) {
+            return null;
+        }
+        try {
+            Phrase phrase = phrases.phrase(c, true);
+            return phrase == null || !c.atEnd() ? null : phrase.ref();
+        } catch (Refusal r) {
+            return null;
+        }
+    }
+
     // ---- the sentence ----
 
     /** "Guppy, stop", "Guppy stop", "Alice: stop". */
@@ -300,6 +314,10 @@ final class Parser {
                 return new GoTo(Reference.place(phrases.place(c)));
             }
             return goTo(c);
+        }
+        if (t.is(PREP, "around") && c.peekAt(1) != null && NounPhrases.startsNounPhrase(c.peekAt(1))) {
+            c.next();
+            return explore(c); // "go round the castle", as "look around the castle"
         }
         if (NounPhrases.isRelation(t)) {
             return new GoTo(Reference.place(phrases.place(c))); // "go near the castle", "go behind the castle"
@@ -531,8 +549,15 @@ final class Parser {
             throw Refusal.hint(context.hint);
         }
         boolean back = false;
-        while (c.peekIs(PREP, "up") || c.peekIs(PREP, "back") || (c.peek() != null && c.peek().is(ME))) {
-            back |= c.next().is(PREP, "back"); // "pick the banana up", "bring it back"
+        while (c.peekIs(PREP, "up") || c.peekIs(PREP, "back") || (c.peek() != null && c.peek().is(ME))
+                || (c.peekIs(PREP, "to") && c.peekAt(1) != null && (c.peekAt(1).is(ME) || c.peekAt(1).is(HERE, "here")))) {
+            Lexeme word = c.next(); // "pick the banana up", "bring it back", "bring them to me"
+            if (word.is(PREP, "to")) {
+                c.next();
+                back = true;
+            } else {
+                back |= word.is(PREP, "back");
+            }
         }
         if (phrase.world() || phrase.ground()) {
             throw Refusal.answer(Answers.collectNotFruit(phrase.world() ? "the world" : "the ground"));
@@ -612,7 +637,7 @@ final class Parser {
             } else if (t.is(SIDE, "right")) {
                 c.next();
                 sign = -1;
-            } else if (t.isAny(PREP, "around", "back") || t.is(SIDE, "backward")) {
+            } else if (t.isAny(PREP, "around", "back", "behind-me") || t.is(SIDE, "backward")) {
                 c.next();
                 around = true;
             } else if (t.is(DIR) && Double.isNaN(degrees) && sign == 0 && !around) {
@@ -667,7 +692,7 @@ final class Parser {
             c.next();
             return new Face(NounPhrases.sector(t));
         }
-        if (t != null && (t.is(SIDE) || t.is(PREP, "around") || t.is(PREP, "back"))) {
+        if (t != null && (t.is(SIDE) || t.isAny(PREP, "around", "back", "behind-me"))) {
             return turn(c);
         }
         return lookAt(c);
@@ -707,7 +732,7 @@ final class Parser {
             c.next();
             return new Face(NounPhrases.sector(t));
         }
-        if (t.is(SIDE) || t.is(PREP, "back")) {
+        if (t.is(SIDE) || t.isAny(PREP, "back", "behind-me")) {
             return turn(c);
         }
         return lookAt(c);
@@ -914,8 +939,7 @@ final class Parser {
         if (before != null) {
             GoTo goTo = (GoTo) before;
             Place place = goTo.destination().place();
-            Goal reach = place.relation() == Relation.NEAR ? new GoTo(place.anchor()) : goTo;
-            return Sequence.of(reach, wait);
+            return Sequence.of(goTo, wait);
         }
         return wait;
     }

@@ -12,9 +12,10 @@ import java.util.Objects;
  * banana {@code on} a table that is {@code near} the castle.
  *
  * @param relation how the object stands to the anchor
- * @param anchor   what it stands in relation to; null for {@link Relation#ON_GROUND}, and for a
- *                 compass relation said without an anchor ("the tree to the north"), which is then
- *                 taken from where the agent stands
+ * @param anchor   what it stands in relation to; null for {@link Relation#ON_GROUND}, for the
+ *                 relations from the agent's heading ({@link Relation#LEFT}, ...), and for
+ *                 {@link Relation#NEAR} or a compass relation said without an anchor ("near you", "the
+ *                 tree to the north"), which are then taken from where the agent stood when told
  */
 public record Place(Relation relation, @Nullable Reference anchor) {
 
@@ -29,8 +30,13 @@ public record Place(Relation relation, @Nullable Reference anchor) {
         if (relation == Relation.ON_GROUND && anchor != null) {
             throw new IllegalArgumentException("ON_GROUND takes no anchor, was given " + anchor);
         }
-        if (anchor == null && relation != Relation.ON_GROUND && relation.sector() == null) {
+        if (anchor == null && relation != Relation.ON_GROUND && relation.sector() == null
+                && relation != Relation.NEAR && !relation.fromHeading()) {
             throw new IllegalArgumentException(relation + " needs an anchor, such as a table or the river");
+        }
+        if (anchor != null && relation.fromHeading()) {
+            throw new IllegalArgumentException(relation + " is taken from the agent's heading and takes no anchor, "
+                    + "was given " + anchor);
         }
     }
 
@@ -78,7 +84,24 @@ public record Place(Relation relation, @Nullable Reference anchor) {
         /** West of the anchor (or of the agent). */
         WEST_OF,
         /** North-west of the anchor (or of the agent). */
-        NORTH_WEST_OF;
+        NORTH_WEST_OF,
+        /** On the agent's left, from its heading when told: "on your left". Takes no anchor. */
+        LEFT,
+        /** On the agent's right: "on your right", "to your right". Takes no anchor. */
+        RIGHT,
+        /** In front of the agent: "in front of you", "ahead of you". Takes no anchor. */
+        AHEAD,
+        /** Behind the agent: "behind you". Takes no anchor. */
+        BEHIND,
+        /** The one of those that fit that is nearest to the anchor: "the fruit closest to the bridge". */
+        CLOSEST_TO,
+        /** The one of those that fit that is farthest from the anchor: "the table farthest from the castle". */
+        FARTHEST_FROM;
+
+        /** Whether this relation is taken from the agent's heading: left, right, ahead, behind. */
+        public boolean fromHeading() {
+            return this == LEFT || this == RIGHT || this == AHEAD || this == BEHIND;
+        }
 
         /** The name of this relation in JSON and in the notation: {@code on}, {@code north-east-of}, ... */
         public String wireName() {

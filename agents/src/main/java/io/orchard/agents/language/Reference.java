@@ -129,6 +129,8 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         BRIDGE(null, null),
         /** The forest: the area where the trees stand. */
         FOREST(null, null),
+        /** Where the agent started the game: "go back to where you started". */
+        START(null, null),
         /** An agent, by {@link Reference#name()} or, without a name, any agent. */
         AGENT(null, null),
         /** No object, only the area its {@link Reference#place()} describes ("north of the castle"). */
@@ -198,14 +200,29 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         }
     }
 
-    /** Which of the objects that fit to choose, by their distance from the agent. */
+    /**
+     * Which one of the objects that fit to choose: by their distance from the agent, their height
+     * (fruit), or how far they lie in a compass direction ("the northern bridge").
+     */
     public enum Distance {
         /** The closest to the agent: "nearest", "closest". */
         NEAREST,
         /** The farthest from the agent: "farthest", "furthest". */
-        FARTHEST;
+        FARTHEST,
+        /** The highest above the ground: "the highest coconut". */
+        HIGHEST,
+        /** The lowest: "the lowest banana". */
+        LOWEST,
+        /** The farthest to the north: "the northern bridge", "the northernmost tree". */
+        NORTHERNMOST,
+        /** The farthest to the south: "the southern bridge". */
+        SOUTHERNMOST,
+        /** The farthest to the east: "the eastern table". */
+        EASTERNMOST,
+        /** The farthest to the west: "the westernmost tree". */
+        WESTERNMOST;
 
-        /** The name of this distance in JSON and in the notation: {@code nearest} or {@code farthest}. */
+        /** The name of this choice in JSON and in the notation: {@code nearest}, {@code northernmost}, ... */
         public String wireName() {
             return name().toLowerCase(Locale.ROOT);
         }

@@ -104,7 +104,29 @@ final class Restatement {
         if (goal instanceof CarryOn) {
             return "carrying on by myself";
         }
+        if (goal instanceof Ask ask) {
+            return asked(ask);
+        }
         throw new IllegalArgumentException("no restatement for " + goal);
+    }
+
+    /** A question as the agent restates it: "you asked what I see". */
+    private static String asked(Ask ask) {
+        return "you asked " + switch (ask.topic()) {
+            case SEE -> ask.about() == null ? "what I see" : "whether I see " + searched(ask.about());
+            case WHERE -> "where I am";
+            case COLLECTED -> "what " + (ask.about() == null ? "fruit" : searched(ask.about())) + " I have collected";
+            case DOING -> "what I am doing";
+            case WHY -> "why I stopped";
+            case WHERE_IS -> "where " + searched(ask.about()) + (plural(ask.about()) ? " are" : " is");
+            case CAN -> "what I can do";
+            case HEADING -> "which way I face";
+        };
+    }
+
+    private static boolean plural(Reference reference) {
+        return reference.isFruit() && reference.distance() == null && reference.size() != Size.LARGEST
+                && reference.size() != Size.SMALLEST;
     }
 
     /** One object of a reference, with its article: "a tree", "the castle", "the nearest banana on a table". */
@@ -125,6 +147,9 @@ final class Restatement {
     private static String phrase(Reference reference, int count, boolean bare) {
         if (reference.kind() == Kind.PLACE) {
             return area(reference);
+        }
+        if (reference.kind() == Kind.START) {
+            return "where I started";
         }
         boolean plural = count > 1;
         StringBuilder core = new StringBuilder();
@@ -149,7 +174,7 @@ final class Restatement {
         if (count == Collect.ALL) {
             return bare ? text : "all the " + text;
         }
-        boolean definite = reference.distance() != null || reference.size() == Size.LARGEST
+        boolean definite = reference.distance() != null || picked(reference.place()) || reference.size() == Size.LARGEST
                 || reference.size() == Size.SMALLEST || reference.kind() == Kind.CASTLE
                 || reference.kind() == Kind.RIVER || reference.kind() == Kind.FOREST;
         if (plural) {
@@ -160,6 +185,23 @@ final class Restatement {
             return "the " + text;
         }
         return ("aeiou".indexOf(text.charAt(0)) >= 0 ? "an " : "a ") + text;
+    }
+
+    /** A place near an anchor or from the agent's heading: "near the river", "near me", "on my left". */
+    private static String mine(Place place) {
+        return switch (place.relation()) {
+            case LEFT -> "on my left";
+            case RIGHT -> "on my right";
+            case AHEAD -> "in front of me";
+            case BEHIND -> "behind me";
+            default -> place.anchor() == null ? "near me" : "near " + noun(place.anchor());
+        };
+    }
+
+    /** Whether a place picks out one object: "closest to the bridge". */
+    private static boolean picked(Place place) {
+        return place != null && (place.relation() == Place.Relation.CLOSEST_TO
+                || place.relation() == Place.Relation.FARTHEST_FROM);
     }
 
     private static String plural(Kind kind) {
@@ -181,7 +223,9 @@ final class Restatement {
             case IN -> (anchor.kind() == Kind.TREE ? hangs : "") + "in " + noun(anchor);
             case UNDER -> lies + "under " + noun(anchor);
             case ON_GROUND -> lies + "on the ground";
-            case NEAR -> "near " + noun(anchor);
+            case NEAR, LEFT, RIGHT, AHEAD, BEHIND -> mine(place);
+            case CLOSEST_TO -> "closest to " + noun(anchor);
+            case FARTHEST_FROM -> "farthest from " + noun(anchor);
             case BEYOND -> "on the other side of " + noun(anchor);
             case THIS_SIDE_OF -> "on this side of " + noun(anchor);
             default -> anchor == null ? "to the " + place.relation().sector().wireName()
@@ -201,7 +245,10 @@ final class Restatement {
             case IN -> "into " + noun(anchor);
             case UNDER -> "under " + noun(anchor);
             case ON_GROUND -> "down to the ground";
-            case NEAR -> "near " + noun(anchor);
+            case NEAR -> mine(place);
+            case LEFT, RIGHT, AHEAD, BEHIND -> "to the area " + mine(place);
+            case CLOSEST_TO -> "to the place closest to " + noun(anchor);
+            case FARTHEST_FROM -> "to the place farthest from " + noun(anchor);
             case BEYOND -> "to the other side of " + noun(anchor);
             case THIS_SIDE_OF -> "to this side of " + noun(anchor);
             default -> anchor == null ? place.relation().sector().wireName()
@@ -226,7 +273,9 @@ final class Restatement {
             case THIS_SIDE_OF -> "this side of " + noun(anchor);
             case ON -> "the area on " + noun(anchor);
             case UNDER -> "the area under " + noun(anchor);
-            case NEAR -> "the area near " + noun(anchor);
+            case NEAR, LEFT, RIGHT, AHEAD, BEHIND -> "the area " + mine(place);
+            case CLOSEST_TO -> "the area closest to " + noun(anchor);
+            case FARTHEST_FROM -> "the area farthest from " + noun(anchor);
             default -> anchor == null ? "the " + place.relation().sector().wireName()
                     : "the area " + place.relation().sector().wireName() + " of " + noun(anchor);
         };

@@ -4,6 +4,7 @@ import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.PerceivedAgent;
 import io.orchard.protocol.value.PerceivedBridge;
@@ -15,6 +16,7 @@ import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.Collections;
+import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
@@ -67,6 +69,8 @@ public final class WorldMemory {
     private Point2 position;
     private double heading;
     private long tick = -1;
+    private Point2 start;
+    private final Map<FruitKind, Integer> collected = new EnumMap<>(FruitKind.class);
     private long terrainVersion;
     private long fruitVersion;
     private Point2 lastExcluded;
@@ -92,6 +96,14 @@ public final class WorldMemory {
     public void placed(Point2 where, double towards) {
         this.position = where;
         this.heading = towards;
+        if (start == null) {
+            start = where;
+        }
+    }
+
+    /** Where the agent was first placed or perceived itself in this game; null before. */
+    public @Nullable Point2 start() {
+        return start;
     }
 
     /**
@@ -104,6 +116,9 @@ public final class WorldMemory {
         double facing = perception.heading();
         position = self;
         heading = facing;
+        if (start == null) {
+            start = self;
+        }
         tick = perception.tick();
         for (PerceivedObject object : perception.objects()) {
             remember(object, self, facing);
@@ -135,6 +150,16 @@ public final class WorldMemory {
         }
         excludeCastle(self);
         coverage.look(self, facing, sight);
+    }
+
+    /** This agent collected a fruit of this kind: counted, to tell the person what it has collected. */
+    public void collected(FruitKind kind) {
+        collected.merge(kind, 1, Integer::sum);
+    }
+
+    /** The fruit this agent has collected, by kind; kinds it has not collected are left out. */
+    public Map<FruitKind, Integer> collected() {
+        return Collections.unmodifiableMap(collected);
     }
 
     /** The fruit was collected (by anyone): forget it for good. */

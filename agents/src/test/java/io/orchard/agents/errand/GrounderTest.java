@@ -62,6 +62,52 @@ class GrounderTest {
     }
 
     @Nested
+    class PickedOutByHeightCompassSideOrLandmark {
+
+        /** From (0, 0) facing north: a coconut on a table to the east, one high in a tree to the west, one on the ground behind. */
+        void orchard() {
+            Views.from(0, 0, 0)
+                    .table("D1", 10, 0, 0.8, 0.9).tree("T1", -10, 0, 2.5)
+                    .fruit("F1", FruitKind.COCONUT, 10.2, 1.25, 0.1, "D1")
+                    .fruit("F3", FruitKind.COCONUT, -10.5, 2.4, 0.5, "T1")
+                    .fruit("F5", FruitKind.COCONUT, 3, 0.35, 4, null)
+                    .into(memory);
+            grounder.told(memory.position(), memory.heading());
+        }
+
+        @Test
+        void theHighestAndTheLowestAreByTheHeightOfTheFruit() {
+            orchard();
+            assertThat(chosen(ground("grab the highest coconut"))).isEqualTo("F3");
+            assertThat(chosen(ground("pick up the lowest coconut"))).isEqualTo("F5");
+        }
+
+        @Test
+        void theNorthernmostAndTheSouthernmostAreByWhereTheyLie() {
+            orchard();
+            assertThat(chosen(ground("get the northernmost coconut"))).isEqualTo("F1");
+            assertThat(chosen(ground("get the southernmost coconut"))).isEqualTo("F5");
+        }
+
+        @Test
+        void closestToALandmarkIsMeasuredFromTheLandmarkNotFromTheAgent() {
+            orchard();
+            assertThat(chosen(ground("get the nearest coconut"))).isEqualTo("F5");
+            assertThat(chosen(ground("get the coconut closest to the table"))).isEqualTo("F1");
+            assertThat(chosen(ground("get the coconut farthest from the table"))).isEqualTo("F3");
+        }
+
+        @Test
+        void sidesAreTakenFromTheHeadingTheAgentHadWhenTold() {
+            orchard();
+            assertThat(fitting("get the coconut on your left")).containsExactly("F3");
+            assertThat(chosen(ground("get the coconut behind you"))).isEqualTo("F5");
+            assertThat(fitting("get the coconuts in front of you")).isEmpty();
+            assertThat(fitting("get the coconuts near you")).contains("F5").doesNotContain("F3");
+        }
+    }
+
+    @Nested
     class FruitAndWhereItIs {
 
         /** From (0, 0): a table D1 with a coconut and a banana, a tree T1 with a coconut above and a tomato below. */

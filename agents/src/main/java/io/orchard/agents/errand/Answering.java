@@ -1,0 +1,279 @@
+package io.orchard.agents.errand;
+
+import io.orchard.agents.language.Ask;
+import io.orchard.agents.language.Reference;
+import io.orchard.agents.language.Reference.Kind;
+import io.orchard.agents.map.KnownBridge;
+import io.orchard.agents.map.KnownFruit;
+import io.orchard.agents.map.KnownObstacle;
+import io.orchard.agents.map.RiverMap;
+import io.orchard.agents.map.SeenAgent;
+import io.orchard.agents.map.ShoreSighting;
+import io.orchard.agents.map.WorldMemory;
+import io.orchard.protocol.value.FruitKind;
+import io.orchard.protocol.value.Point2;
+import io.orchard.protocol.value.Sector;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * Answers the questions a person asks an agent ({@link Ask}) from its own state and memory, in a
+ * short sentence in the world's words: what it sees, where it is ("north of the river, near the
+ * castle"), what it has collected, what it is doing and why, why it stopped, where something is.
+ */
+final class Answering {
+
+    /** What the errands tell the answers about themselves. */
+    interface State {
+        /** What the agent is doing for the person, as its restatement says it; null when nothing. */
+        String doing();
+
+        /** How the last errand ended, in the agent's words; empty when none has ended. */
+        String lastOutcome();
+
+        /** Whether the person told the agent to stop, and it has stood still since. */
+        boolean stopped();
+
+        /** The fruit the agent has collected, by kind. */
+        Map<FruitKind, Integer> collected();
+    }
+
+    /** Fruit hangs in trees from this height up; below it lies on tables (or the ground). */
+    private static final double TREE_LOW = 1.45;
+
+    private final Kit kit;
+    private final State state;
+
+    Answering(Kit kit, State state) {
+        this.kit = kit;
+        this.state = state;
+    }
+
+    /** The answer to the question, one or two short sentences. */
+    String answer(Ask ask) {
+        return switch (ask.topic()) {
+            case SEE -> ask.about() == null ? sight() : seeing(ask.about());
+            case WHERE -> "I'm " + whereabouts(kit.here()) + ".";
+            case COLLECTED -> collected(ask.about());
+            case DOING -> doing();
+            case WHY -> why();
+            case WHERE_IS -> whereIs(ask.about());
+            case CAN -> "I can go to places, cross the river, collect fruit, explore, follow other agents, turn, "
+                    + "wait and stop; and you can ask me what I see, where I am, what I have collected, what I'm "
+                    + "doing and why, and where things are.";
+            case HEADING -> "I'm facing " + compass(kit.motor.heading()) + ".";
+        };
+    }
+
+    private String sight() {
+        WorldMemory memory = kit.memory;
+        Point2 here = kit.here();
+        List<String> parts = new ArrayList<>();
+        List<KnownFruit> fruit = inSight();
+        if (!fruit.isEmpty()) {
+            KnownFruit nearest = fruit.get(0);
+            parts.add(counted(fruit) + " (the nearest " + fruitWords(nearest) + ", "
+                    + Grounder.bearingWords(here, nearest.ground()) + ")");
+        }
+        double range = memory.sight().range();
+        long trees = memory.obstacles().stream().filter(KnownObstacle::isTree)
+                .filter(o -> o.centre().distance(here) <= range).count();
+        long tables = memory.obstacles().stream().filter(o -> !o.isTree())
+                .filter(o -> o.centre().distance(here) <= range).count();
+        if (trees > 0) {
+            parts.add(trees == 1 ? "a tree" : trees + " trees");
+        }
+        if (tables > 0) {
+            parts.add(tables == 1 ? "a table" : tables + " tables");
+        }
+        for (SeenAgent agent : memory.agents()) {
+            if (agent.tick() == memory.tick()) {
+                parts.add(agent.name());
+            }
+        }
+        kit.grounder.castle().filter(c -> c.distance(here) <= range)
+                .ifPresent(c -> parts.add("the castle " + Grounder.bearingWords(here, c)));
+        nearestShore().filter(s -> s.distance(here) <= range)
+                .ifPresent(s -> parts.add("the river " + Grounder.bearingWords(here, s)));
+        if (parts.isEmpty()) {
+            return "I see nothing but open ground.";
+        }
+        return "I see " + list(parts) + ".";
+    }
+
+    private String seeing(Reference about) {
+        Point2 here = kit.here();
+        if (about.isFruit()) {
+            List<KnownFruit> fruit = inSight().stream().filter(f -> about.kind().matches(f.kind())).toList();
+            if (!fruit.isEmpty()) {
+                return "Yes: " + counted(fruit) + ", the nearest " + Grounder.bearingWords(here, fruit.get(0).ground())
+                        + ".";
+            }
+            return "No, I don't see " + Restated.bare(about.withDistance(null)) + " now. " + whereIs(about);
+        }
+        Grounding grounding = kit.grounder.ground(about);
+        List<Known> known = grounding instanceof Grounding.Found found ? found.matches()
+                : grounding instanceof Grounding.Ambiguous ambiguous ? ambiguous.choices() : List.of();
+        double range = kit.memory.sight().range();
+        Optional<Known> seen = known.stream().filter(k -> k.where().distance(here) <= range + k.size()).findFirst();
+        if (seen.isPresent()) {
+            return "Yes: " + Restated.thing(seen.get()) + ", " + Grounder.bearingWords(here, seen.get().where()) + ".";
+        }
+        return "No, not from here. " + whereIs(about);
+    }
+
+    private String collected(Reference about) {
+        Map<FruitKind, Integer> collected = state.collected();
+        if (about != null && about.kind().fruitKind() != null) {
+            int n = collected.getOrDefault(about.kind().fruitKind(), 0);
+            return n == 0 ? "I haven't collected any " + plural(about.kind().fruitKind()) + " yet."
+                    : "I have collected " + count(n, about.kind().fruitKind()) + ".";
+        }
+        List<String> parts = new ArrayList<>();
+        int total = 0;
+        for (FruitKind kind : FruitKind.values()) {
+            int n = collected.getOrDefault(kind, 0);
+            if (n > 0) {
+                parts.add(count(n, kind));
+                total += n;
+            }
+        }
+        if (total == 0) {
+            return "I haven't collected any fruit yet.";
+        }
+        return "I have collected " + total + (total == 1 ? " fruit: " : " fruits: ") + list(parts) + ".";
+    }
+
+    private String doing() {
+        String doing = state.doing();
+        if (doing != null) {
+            return "I'm " + doing + ", because you asked me to.";
+        }
+        if (state.stopped()) {
+            return "I'm standing still, because you told me to stop.";
+        }
+        return "Nothing you asked: I'm on my own, looking for fruit to collect, because that is what I do when no one "
+                + "tells me otherwise.";
+    }
+
+    private String why() {
+        if (state.stopped()) {
+            return "You told me to stop; tell me what to do, or say 'carry on'.";
+        }
+        String doing = state.doing();
+        if (doing != null) {
+            return "I haven't stopped: I'm " + doing + ".";
+        }
+        String last = state.lastOutcome();
+        if (!last.isEmpty()) {
+            return "My last errand ended so: " + last;
+        }
+        return "Nothing stopped me; I'm on my own, looking for fruit to collect.";
+    }
+
+    private String whereIs(Reference about) {
+        Point2 here = kit.here();
+        if (about.kind() == Kind.START) {
+            return "Where I started is " + Grounder.bearingWords(here, kit.grounder.start()) + ".";
+        }
+        List<Known> fits = kit.grounder.fitting(about);
+        if (fits.isEmpty()) {
+            return "I don't know of " + (about.isFruit() ? "any " + Restated.bare(about.withDistance(null)) : about.words())
+                    + " yet.";
+        }
+        List<Known> chosen = kit.grounder.select(about, fits);
+        Known first = chosen.get(0);
+        String at = Grounder.bearingWords(here, first.where());
+        if (about.isFruit() && chosen.size() > 1) {
+            return "I know of " + chosen.size() + "; the nearest is " + at + ", " + whereabouts(first.where()) + ".";
+        }
+        return (first.kind() == Kind.AGENT ? first.id() : capital(Restated.thing(first))) + " is " + at + ", "
+                + whereabouts(first.where()) + ".";
+    }
+
+    /** Where a point is, in the world's words: "north of the river, near the castle, by the bridge B2". */
+    String whereabouts(Point2 p) {
+        List<String> parts = new ArrayList<>();
+        Optional<Point2> shore = nearestShore();
+        RiverMap.Side side = kit.memory.river().side(p.x(), p.z(), 0);
+        if (side == RiverMap.Side.WATER) {
+            parts.add("in the river");
+        } else if (shore.isPresent() && (side == RiverMap.Side.LOW || side == RiverMap.Side.HIGH)) {
+            parts.add(Grounder.compass(shore.get(), p) + " of the river");
+        }
+        kit.grounder.castle().ifPresent(castle -> parts.add(castle.distance(p) <= Grounder.CASTLE_SIZE + Grounder.NEAR
+                ? "near the castle" : Grounder.compass(castle, p) + " of the castle"));
+        kit.memory.bridges().stream().min(Comparator.comparingDouble((KnownBridge b) -> b.middle().distance(p)))
+                .filter(b -> b.middle().distance(p) <= b.length() / 2 + Grounder.NEAR)
+                .ifPresent(b -> parts.add("by the bridge " + b.id()));
+        boolean forest = kit.memory.obstacles().stream().filter(KnownObstacle::isTree)
+                .filter(t -> t.centre().distance(p) <= t.radius() + 4).count() >= 2;
+        if (forest) {
+            parts.add("in the forest");
+        }
+        if (parts.isEmpty()) {
+            return String.format(Locale.ROOT, "at x %.0f, z %.0f, and I know no landmark near", p.x(), p.z());
+        }
+        return String.join(", ", parts);
+    }
+
+    private List<KnownFruit> inSight() {
+        Point2 here = kit.here();
+        return kit.memory.fruit().stream().filter(f -> f.seenTick() == kit.memory.tick())
+                .sorted(Comparator.comparingDouble(f -> f.ground().distance(here))).toList();
+    }
+
+    private Optional<Point2> nearestShore() {
+        Point2 here = kit.here();
+        return kit.memory.river().sightings().stream().map(ShoreSighting::shore)
+                .min(Comparator.comparingDouble(s -> s.distance(here)));
+    }
+
+    private static String counted(List<KnownFruit> fruit) {
+        List<String> parts = new ArrayList<>();
+        for (FruitKind kind : FruitKind.values()) {
+            int n = (int) fruit.stream().filter(f -> f.kind() == kind).count();
+            if (n > 0) {
+                parts.add(count(n, kind));
+            }
+        }
+        return list(parts);
+    }
+
+    private static String fruitWords(KnownFruit fruit) {
+        String kind = fruit.kind().name().toLowerCase(Locale.ROOT);
+        if (fruit.support() == null) {
+            return kind + " on the ground";
+        }
+        return kind + (fruit.height() > TREE_LOW ? " in a tree" : " on a table");
+    }
+
+    private static String count(int n, FruitKind kind) {
+        return n == 1 ? (kind == FruitKind.TOMATO ? "a tomato" : "a " + kind.name().toLowerCase(Locale.ROOT))
+                : n + " " + plural(kind);
+    }
+
+    private static String plural(FruitKind kind) {
+        return kind == FruitKind.TOMATO ? "tomatoes" : kind.name().toLowerCase(Locale.ROOT) + "s";
+    }
+
+    /** The compass direction a heading faces: "north-east". */
+    static String compass(double heading) {
+        return Sector.of(-Math.sin(heading), -Math.cos(heading)).wireName();
+    }
+
+    private static String capital(String text) {
+        return Character.toUpperCase(text.charAt(0)) + text.substring(1);
+    }
+
+    private static String list(List<String> parts) {
+        if (parts.size() == 1) {
+            return parts.get(0);
+        }
+        return String.join(", ", parts.subList(0, parts.size() - 1)) + " and " + parts.get(parts.size() - 1);
+    }
+}

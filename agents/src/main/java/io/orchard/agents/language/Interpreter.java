@@ -1,0 +1,30 @@
+package io.orchard.agents.language;
+
+/**
+ * What reads a person's sentence into a {@link Goal} or an answer: the agents' plug for
+ * understanding. {@link InstructionInterpreter}, a deterministic grammar of English, is the one
+ * every agent uses unless it overrides {@code AgentController.interpreter()}; a student may supply
+ * their own, in any way they like, as long as it gives an {@link Interpretation} for every
+ * sentence. Goals made elsewhere can be read from their JSON with {@link GoalJson#read(String)}.
+ *
+ * <pre>{@code
+ * @Override
+ * protected Interpreter interpreter() {
+ *     InstructionInterpreter english = new InstructionInterpreter();
+ *     return sentence -> sentence.equals("dance")
+ *             ? new Interpretation.Understood(new Turn(2 * Math.PI), "Dancing.", Optional.empty())
+ *             : english.interpret(sentence);
+ * }
+ * }</pre>
+ */
+@FunctionalInterface
+public interface Interpreter {
+
+    /**
+     * What this sentence asks for. Must not throw: a sentence it cannot read gives a
+     * {@link Interpretation.NotUnderstood} with an answer for the person.
+     *
+     * @param sentence what the person typed; may be null, empty or anything else
+     */
+    Interpretation interpret(String sentence);
+}
