@@ -1,9 +1,13 @@
 package io.orchard.examples.schema;
 
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.BridgeShape;
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Nullable;
+import io.orchard.protocol.value.Rotation;
 import java.lang.reflect.RecordComponent;
 import java.util.List;
 import java.util.Map;
@@ -50,9 +54,9 @@ final class Constraints {
     private static final Set<String> COUNTS = Set.of("every", "points", "fruit", "fruitCount");
     private static final Set<String> POLYGONS = Set.of("footprint", "outline");
     private static final Map<Class<?>, String> BETWEEN_FIELDS = Map.of(
-            io.orchard.protocol.value.Bounds.class, "minX < maxX and minZ < maxZ.",
-            io.orchard.protocol.value.Gripper.class, "maxHeight >= minHeight.",
-            io.orchard.protocol.value.BridgeShape.class, "entryB is not the same point as entryA.");
+            Bounds.class, "minX < maxX and minZ < maxZ.",
+            Gripper.class, "maxHeight >= minHeight.",
+            BridgeShape.class, "entryB is not the same point as entryA.");
 
     private static final JsonMapper MAPPER = JsonMapper.builder().build();
 
@@ -69,7 +73,7 @@ final class Constraints {
                 properties.set(component.getName(), orNull(property));
             }
         }
-        if (record == io.orchard.protocol.value.Rotation.class) {
+        if (record == Rotation.class) {
             definition.set("not", notTheZeroAxis());
         } else if (record == ModelSpec.class) {
             eitherBundledOrData(definition);
