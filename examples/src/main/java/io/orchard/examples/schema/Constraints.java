@@ -1,10 +1,14 @@
 package io.orchard.examples.schema;
 
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.BridgeShape;
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.LeanUnits;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Nullable;
+import io.orchard.protocol.value.Rotation;
 import java.lang.reflect.RecordComponent;
 import java.util.List;
 import java.util.Map;
@@ -56,9 +60,9 @@ final class Constraints {
     private static final Set<String> LEAN_ANY = Set.of("x", "y", "z", "heading", "across");
     private static final Set<String> POLYGONS = Set.of("footprint", "outline");
     private static final Map<Class<?>, String> BETWEEN_FIELDS = Map.of(
-            io.orchard.protocol.value.Bounds.class, "minX < maxX and minZ < maxZ.",
-            io.orchard.protocol.value.Gripper.class, "maxHeight >= minHeight.",
-            io.orchard.protocol.value.BridgeShape.class, "entryB is not the same point as entryA.");
+            Bounds.class, "minX < maxX and minZ < maxZ.",
+            Gripper.class, "maxHeight >= minHeight.",
+            BridgeShape.class, "entryB is not the same point as entryA.");
 
     private static final JsonMapper MAPPER = JsonMapper.builder().build();
 
@@ -79,7 +83,7 @@ final class Constraints {
                 properties.set(component.getName(), orNull(property));
             }
         }
-        if (record == io.orchard.protocol.value.Rotation.class) {
+        if (record == Rotation.class) {
             definition.set("not", notTheZeroAxis());
         } else if (record == ModelSpec.class) {
             eitherBundledOrData(definition);
