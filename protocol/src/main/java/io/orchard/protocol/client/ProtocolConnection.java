@@ -109,6 +109,20 @@ public final class ProtocolConnection implements AutoCloseable {
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
                                              Listener listener) throws IOException {
+        return connect(host, port, role, clientName, token, null, listener);
+    }
+
+    /**
+     * Connects as the game's operator, who may start, pause and resume the game with
+     * {@code GameControl}, and performs the handshake. A server refuses a wrong operator token as it
+     * refuses a wrong token: the handshake fails with {@code unauthorized}.
+     *
+     * @param token         the server's shared secret, or null when it requires none
+     * @param operatorToken the server's operator token, or null to connect as an ordinary client
+     * @see #connect(String, int, Role, String, Listener)
+     */
+    public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
+                                             String operatorToken, Listener listener) throws IOException {
         Objects.requireNonNull(listener, "listener");
         Socket socket = new Socket();
         try {
@@ -116,7 +130,7 @@ public final class ProtocolConnection implements AutoCloseable {
             open(socket, host, port);
             ProtocolConnection connection = new ProtocolConnection(socket, new MessageCodec(), listener);
             connection.readerThread.start();
-            connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token));
+            connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token, operatorToken));
             connection.awaitWelcome();
             return connection;
         } catch (IOException | RuntimeException e) {
