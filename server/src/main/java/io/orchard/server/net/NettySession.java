@@ -37,6 +37,7 @@ final class NettySession implements ClientSession {
 
     private final long id;
     private final Role role;
+    private final int version;
     private final Channel channel;
     private final SessionContext shared;
     private final Outbox outbox;
@@ -45,10 +46,14 @@ final class NettySession implements ClientSession {
     /** Ticks whose messages were handed to the I/O thread and not yet written. */
     private final AtomicInteger unwritten = new AtomicInteger();
 
-    /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
-    NettySession(long id, Role role, Channel channel, SessionContext shared, Outbox outbox) {
+    /**
+     * Made on the channel's I/O thread, for a client that speaks protocol {@code version} on a
+     * channel whose output goes through {@code outbox}.
+     */
+    NettySession(long id, Role role, int version, Channel channel, SessionContext shared, Outbox outbox) {
         this.id = id;
         this.role = role;
+        this.version = version;
         this.channel = channel;
         this.shared = shared;
         this.outbox = outbox;
@@ -62,6 +67,11 @@ final class NettySession implements ClientSession {
     @Override
     public Role role() {
         return role;
+    }
+
+    @Override
+    public int protocolVersion() {
+        return version;
     }
 
     @Override

@@ -102,8 +102,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             pipeline.remove(IdleStateHandler.class);
         }
         long id = shared.sessionIds().incrementAndGet();
-        session = new NettySession(id, hello.role(), ctx.channel(), shared, outbox);
-        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()));
+        session = new NettySession(id, hello.role(), hello.protocolVersion(), ctx.channel(), shared, outbox);
+        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role(), hello.protocolVersion()));
         log.debug("{} connected as '{}'", session, hello.client());
         inbox.connected(session);
     }

@@ -1,5 +1,6 @@
 package io.orchard.server.sim;
 
+import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
@@ -19,6 +20,11 @@ public interface ClientSession {
 
     /** What the client said it is in its hello. */
     Role role();
+
+    /** The protocol version the client named in its hello: what it may be sent. */
+    default int protocolVersion() {
+        return ProtocolVersion.CURRENT;
+    }
 
     /** Queues one message for this client. */
     void send(ServerMessage message);

@@ -1,6 +1,5 @@
 package io.orchard.server.sim;
 
-import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.ClientMessage;
@@ -116,8 +115,8 @@ public final class Simulation implements Inbox {
     }
 
     @Override
-    public WelcomeMessage welcome(long seq, Role role) {
-        return new WelcomeMessage(seq, ProtocolVersion.CURRENT, serverVersion, role, world.bounds(), config.tickRate(),
+    public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+        return new WelcomeMessage(seq, protocolVersion, serverVersion, role, world.bounds(), config.tickRate(),
                 config.clock(), outbox.tick());
     }
 

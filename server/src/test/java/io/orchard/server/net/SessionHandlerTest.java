@@ -48,8 +48,8 @@ class SessionHandlerTest {
         }
 
         @Override
-        public WelcomeMessage welcome(long seq, Role role) {
-            return new WelcomeMessage(seq, 1, "test", role, new Bounds(-1, -1, 1, 1), 20, ClockMode.REALTIME, 0);
+        public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+            return new WelcomeMessage(seq, protocolVersion, "test", role, new Bounds(-1, -1, 1, 1), 20, ClockMode.REALTIME, 0);
         }
     }
 
@@ -118,6 +118,15 @@ class SessionHandlerTest {
         assertThat((Object) channel.readOutbound()).isInstanceOf(WelcomeMessage.class);
         assertThat(channel.isOpen()).isTrue();
         assertThat(inbox.connected).hasSize(1);
+    }
+
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2})
+    void theWelcomeAndTheSessionSpeakTheVersionOfTheHello(int version) {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(version, null));
+        assertThat(((WelcomeMessage) channel.readOutbound()).protocolVersion()).isEqualTo(version);
+        assertThat(inbox.connected).singleElement().satisfies(s -> assertThat(s.protocolVersion()).isEqualTo(version));
     }
 
     @Test
