@@ -38,7 +38,7 @@ class ServerMainTest {
         assertThat(run("", "--help")).isZero();
         assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
                 "--record", "--token", "--checkpoint", "--checkpoint-every", "--resume",
-                "Console commands: start, pause, continue, status, checkpoint [FILE], stop");
+                "--stop-on-stdin-close", "Console commands: start, pause, continue, status, checkpoint [FILE], stop");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -97,6 +97,28 @@ class ServerMainTest {
         out.reset();
         assertThat(run("", "--port", "0", "--resume", checkpoint.toString(), "--quiet")).isZero();
         assertThat(out()).contains("resumed from", "over", "Game over. Ranking:");
+    }
+
+    @Test
+    void whenTheConsoleInputEndsTheServerSaysSoOnceAndPlaysOn() throws Exception {
+        Path record = dir.resolve("game.ndjson");
+        assertThat(run("start\n", "--port", "0", "--seed", "3", "--time-limit", "0.5", "--tick-rate", "50",
+                "--record", record.toString(), "--quiet")).isZero();
+        assertThat(out().split("console input closed", -1)).as("times the closed input is told").hasSize(2);
+        assertThat(out()).contains("console input closed: the server runs on without its console; stop it with "
+                + "Ctrl-C or kill " + ProcessHandle.current().pid() + " (SIGTERM)", "Game over. Ranking:");
+        assertThat(java.nio.file.Files.readString(record)).contains("\"reason\":\"time limit reached\"");
+    }
+
+    @Test
+    void withStopOnStdinCloseTheEndOfTheConsoleInputEndsTheGameAndTheServer() throws Exception {
+        Path record = dir.resolve("game.ndjson");
+        assertThat(run("", "--port", "0", "--seed", "3", "--record", record.toString(), "--quiet",
+                "--stop-on-stdin-close")).isZero();
+        assertThat(out()).contains("console input closed: the game ends and the server stops "
+                + "(--stop-on-stdin-close)", "Game over. Ranking:");
+        assertThat(java.nio.file.Files.readString(record))
+                .contains("\"reason\":\"the server's console input closed\"");
     }
 
     @Test

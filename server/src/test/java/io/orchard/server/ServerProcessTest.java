@@ -67,10 +67,21 @@ class ServerProcessTest {
 
     /** Starts {@code ServerMain} in a JVM of its own and returns the port it listens on. */
     private int startServer(Process[] started, String... args) throws Exception {
+        return startServer(started, builder -> { }, new ArrayList<>(), args);
+    }
+
+    /**
+     * Starts {@code ServerMain} in a JVM of its own, as {@code setUp} sets its process up, keeps
+     * every line it writes in {@code written} and returns the port it listens on.
+     */
+    private int startServer(Process[] started, java.util.function.Consumer<ProcessBuilder> setUp, List<String> written,
+                            String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), ServerMain.class.getName()));
         command.addAll(List.of(args));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        setUp.accept(builder);
+        Process process = builder.start();
         processes.add(process);
         started[0] = process;
         CompletableFuture<Integer> port = new CompletableFuture<>();
@@ -79,6 +90,7 @@ class ServerProcessTest {
                     StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = lines.readLine()) != null) {
+                    written.add(line);
                     Matcher matcher = LISTENING.matcher(line);
                     if (matcher.find()) {
                         port.complete(Integer.parseInt(matcher.group(1)));
@@ -109,6 +121,16 @@ class ServerProcessTest {
                                        java.util.function.LongFunction<? extends io.orchard.protocol.message.ClientMessage> message)
             throws Exception {
         return (ServerMessage) connection.request(message).get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void withStopOnStdinCloseAServerWhoseInputClosesStops() throws Exception {
+        Process[] server = new Process[1];
+        List<String> output = new java.util.concurrent.CopyOnWriteArrayList<>();
+        startServer(server, builder -> { }, output, "--port", "0", "--quiet", "--stop-on-stdin-close");
+        server[0].getOutputStream().close();
+        assertThat(server[0].waitFor(20, TimeUnit.SECONDS)).as("the server stopped; it wrote %s", output).isTrue();
+        assertThat(server[0].exitValue()).isZero();
     }
 
     @Test
