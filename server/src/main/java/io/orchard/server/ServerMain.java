@@ -43,9 +43,15 @@ import picocli.CommandLine.Spec;
             "It holds the world and the game and speaks the protocol on one TCP port; it prints the game's state "
                     + "every second and the ranking when the game is over."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
-        footer = "Console commands: start, pause, continue, status, checkpoint [FILE], stop. When standard input "
-                + "ends, the server runs on (stop it with Ctrl-C or SIGTERM) unless --stop-on-stdin-close is given.")
+        footer = {"Console commands: start, pause, continue, status, checkpoint [FILE], stop. When standard input "
+                + "ends, the server runs on (stop it with Ctrl-C or SIGTERM) unless --stop-on-stdin-close is given.",
+            "",
+            "Environment: " + ServerMain.OPERATOR_TOKEN_VARIABLE + " gives the operator token when --operator-token "
+                    + "does not, out of sight of other users' ps."})
 public final class ServerMain implements Callable<Integer> {
+
+    /** The environment variable that gives the operator token when the command line does not. */
+    public static final String OPERATOR_TOKEN_VARIABLE = "ORCHARD_OPERATOR_TOKEN";
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + WorldServer.DEFAULT_PORT,
             converter = CommandLines.Port.class, description = "TCP port; 0 picks a free one (default: ${DEFAULT-VALUE})")
@@ -93,6 +99,11 @@ public final class ServerMain implements Callable<Integer> {
     @Option(names = "--token", paramLabel = "SECRET",
             description = "Require clients to present this token in their hello")
     private String token;
+
+    @Option(names = "--operator-token", paramLabel = "SECRET", defaultValue = "${env:" + OPERATOR_TOKEN_VARIABLE + "}",
+            description = "Let a client that presents this token in its hello start, pause and resume the game "
+                    + "(GameControl); without it only this console does. Also read from " + OPERATOR_TOKEN_VARIABLE)
+    private String operatorToken;
 
     @Option(names = "--checkpoint", paramLabel = "FILE",
             description = "Save the whole game to FILE: when fruit is collected, at the end, on the console's "
@@ -226,6 +237,9 @@ public final class ServerMain implements Callable<Integer> {
         if (token != null) {
             builder.token(token);
         }
+        if (operatorToken != null) {
+            builder.operatorToken(operatorToken);
+        }
         if (checkpoint != null) {
             builder.checkpoint(checkpoint, checkpointEvery > 0
                     ? Duration.ofMillis((long) (checkpointEvery * 1000)) : null);
@@ -252,8 +266,10 @@ public final class ServerMain implements Callable<Integer> {
                         boolean paused = server.phase() == Phase.PAUSED;
                         if (command.equals("pause") == paused) {
                             out.println(paused ? "already paused" : "not paused");
+                        } else if (paused) {
+                            server.resumeGame();
                         } else {
-                            server.togglePause();
+                            server.pauseGame();
                         }
                     }
                     case "status" -> out.println(server.status());

@@ -3,6 +3,7 @@ package io.orchard.server;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.WelcomeMessage;
@@ -14,12 +15,14 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * Each client is answered in the protocol version it spoke, on a real server over a raw socket:
- * the {@code Welcome} repeats the hello's version.
+ * the {@code Welcome} repeats the hello's version, and a version 1 client is told only what
+ * version 1 knows.
  */
 class ProtocolVersionsTest {
 
@@ -28,7 +31,7 @@ class ProtocolVersionsTest {
 
     @BeforeEach
     void start() throws IOException {
-        server = WorldServer.builder().port(0).seed(11).clock(ClockMode.REALTIME).start();
+        server = WorldServer.builder().port(0).seed(11).clock(ClockMode.REALTIME).operatorToken("op-4411").start();
     }
 
     @AfterEach
@@ -71,6 +74,28 @@ class ProtocolVersionsTest {
                 assertThat(w.protocolVersion()).isEqualTo(version);
                 assertThat(w.seq()).isEqualTo(1);
             });
+        }
+    }
+
+    @Test
+    void aVersion1ClientsGameControlIsRefusedWithACodeVersion1Knows() throws IOException {
+        try (Socket socket = new Socket("127.0.0.1", server.port())) {
+            ServerMessage refused = exchange(socket, hello(1), "{\"type\":\"GameControl\",\"seq\":2,\"command\":\"pause\"}");
+
+            assertThat(refused).isInstanceOfSatisfying(ErrorMessage.class, error -> {
+                assertThat(error.seq()).isEqualTo(2);
+                assertThat(error.code()).isEqualTo(ErrorCode.WRONG_ROLE);
+            });
+        }
+    }
+
+    @Test
+    void aVersion2ClientsGameControlIsForbidden() throws IOException {
+        try (Socket socket = new Socket("127.0.0.1", server.port())) {
+            ServerMessage refused = exchange(socket, hello(2), "{\"type\":\"GameControl\",\"seq\":2,\"command\":\"pause\"}");
+
+            assertThat(refused).isInstanceOfSatisfying(ErrorMessage.class,
+                    error -> assertThat(error.code()).isEqualTo(ErrorCode.FORBIDDEN));
         }
     }
 }

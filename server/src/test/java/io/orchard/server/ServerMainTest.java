@@ -37,8 +37,9 @@ class ServerMainTest {
     void helpListsEveryOptionAndTheConsoleCommands() throws Exception {
         assertThat(run("", "--help")).isZero();
         assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
-                "--record", "--token", "--checkpoint", "--checkpoint-every", "--resume",
-                "--stop-on-stdin-close", "Console commands: start, pause, continue, status, checkpoint [FILE], stop");
+                "--record", "--token", "--operator-token", "--checkpoint", "--checkpoint-every", "--resume",
+                "--stop-on-stdin-close", "Console commands: start, pause, continue, status, checkpoint [FILE], stop",
+                "ORCHARD_OPERATOR_TOKEN");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -119,6 +120,40 @@ class ServerMainTest {
                 + "(--stop-on-stdin-close)", "Game over. Ranking:");
         assertThat(java.nio.file.Files.readString(record))
                 .contains("\"reason\":\"the server's console input closed\"");
+    }
+
+    @Test
+    void theConsolePausesAndContinuesTheGame() throws Exception {
+        java.io.PipedOutputStream typed = new java.io.PipedOutputStream();
+        java.io.PipedInputStream console = new java.io.PipedInputStream(typed);
+        java.util.concurrent.CompletableFuture<Integer> exit = java.util.concurrent.CompletableFuture.supplyAsync(
+                () -> ServerMain.run(List.of("--port", "0", "--seed", "3", "--time-limit", "2", "--tick-rate", "50",
+                        "--quiet"), console, new PrintStream(out, true, StandardCharsets.UTF_8),
+                        new PrintStream(err, true, StandardCharsets.UTF_8)));
+        typed.write("start\npause\nstatus\n".getBytes(StandardCharsets.UTF_8));
+        typed.flush();
+        awaitStatusLines("paused  t=", 1);
+        for (int asked = 2; asked <= 3; asked++) {
+            Thread.sleep(300);
+            typed.write("status\n".getBytes(StandardCharsets.UTF_8));
+            typed.flush();
+            awaitStatusLines("paused  t=", asked);
+        }
+        List<String> paused = out().lines().filter(line -> line.startsWith("paused  t=")).toList();
+        assertThat(paused.get(2)).as("the game's time and tick while paused").isEqualTo(paused.get(1));
+        typed.write("continue\n".getBytes(StandardCharsets.UTF_8));
+        typed.close();
+        assertThat(exit.get(30, java.util.concurrent.TimeUnit.SECONDS)).isZero();
+        assertThat(out()).contains("Game over. Ranking:");
+    }
+
+    private void awaitStatusLines(String start, int count) throws InterruptedException {
+        long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
+        while (out().lines().filter(line -> line.startsWith(start)).count() < count) {
+            assertThat(System.nanoTime()).as("waiting for %d lines '%s...' in:%n%s", count, start, out())
+                    .isLessThan(end);
+            Thread.sleep(10);
+        }
     }
 
     @Test

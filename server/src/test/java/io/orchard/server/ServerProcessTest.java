@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
 import io.orchard.protocol.message.GraspResultMessage;
 import io.orchard.protocol.message.MoveMessage;
@@ -15,6 +16,7 @@ import io.orchard.protocol.message.SetRotationMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GameCommand;
 import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Role;
@@ -121,6 +123,28 @@ class ServerProcessTest {
                                        java.util.function.LongFunction<? extends io.orchard.protocol.message.ClientMessage> message)
             throws Exception {
         return (ServerMessage) connection.request(message).get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void aServerStartedWithItsInputClosedRunsOnAndTakesItsOperatorTokenFromTheEnvironment() throws Exception {
+        List<String> output = new java.util.concurrent.CopyOnWriteArrayList<>();
+        Process[] server = new Process[1];
+        int port = startServer(server, builder -> builder.environment().put(ServerMain.OPERATOR_TOKEN_VARIABLE,
+                "op-env-5150"), output, "--port", "0", "--quiet");
+        server[0].getOutputStream().close();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (output.stream().noneMatch(line -> line.startsWith("console input closed: the server runs on"))) {
+            assertThat(System.nanoTime()).as("the server's word on its closed input; it wrote %s", output)
+                    .isLessThan(deadline);
+            Thread.sleep(20);
+        }
+        try (ProtocolConnection operator = ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", null,
+                "op-env-5150", m -> { })) {
+            ServerMessage started = reply(operator, seq -> new GameControlMessage(seq, GameCommand.START));
+            assertThat(started).isInstanceOfSatisfying(ActionResultMessage.class,
+                    result -> assertThat(result.outcome()).isEqualTo(Outcome.ACCEPTED));
+        }
+        assertThat(server[0].isAlive()).as("the server after its input closed").isTrue();
     }
 
     @Test

@@ -178,9 +178,11 @@ public final class Simulation implements Inbox {
     }
 
     void endTick(List<Event> events) {
+        boolean ticking = game.running();
         apply(events);
         boolean scored = false;
-        if (game.running()) {
+        // A pause that came during the tick takes effect once the tick is over, so that none is left half done.
+        if (game.running() || ticking && game.phase() == Phase.PAUSED) {
             long tick = outbox.tick();
             boolean collected = grasps.resolve(tick, outbox.time());
             double time = (tick + 1) * config.tickSeconds();
