@@ -94,7 +94,8 @@ public final class ProtocolConnection implements AutoCloseable {
      * @throws IOException when the server cannot be reached or refuses the handshake; the message
      *                     names the host and port and what went wrong: an {@link UnknownHostException}
      *                     for a host with no address, a {@link ConnectException} when no server
-     *                     listens there
+     *                     listens there, one caused by a {@link HandshakeRefusedException} when the
+     *                     server answered the hello with an error
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, Listener listener)
             throws IOException {
@@ -268,7 +269,7 @@ public final class ProtocolConnection implements AutoCloseable {
             if (message instanceof WelcomeMessage hello) {
                 welcome.complete(hello);
             } else if (message instanceof ErrorMessage error) {
-                welcome.completeExceptionally(new IOException(error.code().wireName() + ": " + error.text()));
+                welcome.completeExceptionally(new HandshakeRefusedException(error));
             }
             return;
         }
