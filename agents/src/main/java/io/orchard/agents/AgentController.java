@@ -24,6 +24,7 @@ import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import java.io.IOException;
+import java.time.Duration;
 import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.random.RandomGenerator;
@@ -114,6 +115,14 @@ public abstract class AgentController {
     /** Leaves the game: closes the connection, and {@link #run} returns. Safe from any thread. */
     public final void stop() {
         loop.stop();
+    }
+
+    /**
+     * Sends a keep-alive after this much silence instead of every 30 s, for a server whose idle
+     * rule is shorter than its default 120 s. Call before {@link #run}.
+     */
+    final void keepAliveEvery(Duration silence) {
+        loop.keepAliveEvery(silence);
     }
 
     /** What the agent registers, as {@link #body()} declares it (asked once). Safe from any thread. */

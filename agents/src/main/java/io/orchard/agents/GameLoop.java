@@ -23,6 +23,7 @@ import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Outcome;
 import java.io.IOException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -102,6 +103,11 @@ final class GameLoop {
     /** Leaves the game: the connection closes, and {@link #run} returns. Safe from any thread. */
     void stop() {
         session.stop();
+    }
+
+    /** Keep-alives after this much silence instead of every 30 s, for a server with a shorter idle rule. */
+    void keepAliveEvery(Duration silence) {
+        session.keepAliveEvery(silence);
     }
 
     /** What the agent has done so far, as published at the end of its latest turn. Safe from any thread. */

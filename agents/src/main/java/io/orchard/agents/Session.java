@@ -3,6 +3,7 @@ package io.orchard.agents;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
+import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.Reply;
 import io.orchard.protocol.message.SayMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -10,6 +11,7 @@ import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Role;
 import java.io.IOException;
+import java.time.Duration;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
@@ -24,7 +26,8 @@ import org.slf4j.LoggerFactory;
  * The agent's connection to the server. What the server sends, and the instructions other threads
  * hand the agent, wait in one queue for the controller's thread. What the agent sends goes out no
  * faster than the server allows ({@link Throttle}), and a message the server will answer is kept
- * by its sequence number until the answer comes, so that the answer can be read with it.
+ * by its sequence number until the answer comes, so that the answer can be read with it. When the
+ * agent has said nothing for a while, it says "still here" ({@link Silence}).
  */
 final class Session {
 
@@ -40,6 +43,7 @@ final class Session {
     private final BlockingQueue<Object> inbox = new LinkedBlockingQueue<>();
     private final Map<Long, ClientMessage> awaiting = new HashMap<>();
     private final Throttle throttle = new Throttle(Throttle.RATE, Throttle.BURST);
+    private final Silence silence = new Silence();
     private volatile ProtocolConnection connection;
     private volatile boolean stopping;
 
@@ -61,6 +65,19 @@ final class Session {
                         inbox.add(new Closed(cause));
                     }
                 });
+        silence.watch(this::keepAlive);
+    }
+
+    /** Says "still here" to a server of version 2 or later, on the silence's thread. */
+    private void keepAlive() {
+        ProtocolConnection open = connection;
+        if (open != null && open.isOpen() && open.welcome().protocolVersion() >= 2) {
+            try {
+                open.send(KeepAliveMessage::new);
+            } catch (IOException e) {
+                log.debug("{}: could not send a keep-alive: {}", agent, e.getMessage());
+            }
+        }
     }
 
     /** The server's welcome, the first thing it sends. */
@@ -70,6 +87,7 @@ final class Session {
 
     /** Sends a message and hands back the server's reply to it when it comes. */
     CompletableFuture<Reply> request(LongFunction<? extends ClientMessage> message) {
+        silence.broken();
         return connection.request(message);
     }
 
@@ -91,6 +109,7 @@ final class Session {
             return -1;
         }
         try {
+            silence.broken();
             return open.send(seq -> {
                 ClientMessage built = message.apply(seq);
                 if (!(built instanceof EndTurnMessage || built instanceof SayMessage)) {
@@ -102,6 +121,11 @@ final class Session {
             log.debug("{}: could not send: {}", agent, e.getMessage());
             return -1;
         }
+    }
+
+    /** Keep-alives after this much silence instead of {@link Silence#EVERY}. */
+    void keepAliveEvery(Duration silence) {
+        this.silence.every(silence);
     }
 
     /** The message the server answered under this sequence number; null when none is awaited. */
@@ -137,6 +161,7 @@ final class Session {
 
     /** Closes the connection, if it was opened. */
     void close() {
+        silence.unwatch();
         ProtocolConnection open = connection;
         if (open != null) {
             open.close();

@@ -30,7 +30,9 @@ import picocli.CommandLine.Spec;
 /**
  * The world server's command line: {@code ./orchard server [options]}. It prints the game's state
  * once a second and the ranking at the end, and reads commands from its console: {@code start},
- * {@code pause}, {@code continue}, {@code status}, {@code checkpoint [FILE]}, {@code stop}.
+ * {@code pause}, {@code continue}, {@code status}, {@code checkpoint [FILE]}, {@code stop}. When its
+ * standard input ends (started with {@code < /dev/null}, or in the background) it says so once and
+ * runs on, to be stopped by a signal, unless {@code --stop-on-stdin-close} asks it to stop.
  *
  * <p>Run on its own ({@link #main}, {@link #run}) it is {@code orchard server}; {@link #command}
  * hands it to a launcher as its subcommand {@code server}. Exit status: 0 done, 1 failed, 2 bad
@@ -41,8 +43,15 @@ import picocli.CommandLine.Spec;
             "It holds the world and the game and speaks the protocol on one TCP port; it prints the game's state "
                     + "every second and the ranking when the game is over."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
-        footer = "Console commands: start, pause, continue, status, checkpoint [FILE], stop.")
+        footer = {"Console commands: start, pause, continue, status, checkpoint [FILE], stop. When standard input "
+                + "ends, the server runs on (stop it with Ctrl-C or SIGTERM) unless --stop-on-stdin-close is given.",
+            "",
+            "Environment: " + ServerMain.OPERATOR_TOKEN_VARIABLE + " gives the operator token when --operator-token "
+                    + "does not, out of sight of other users' ps."})
 public final class ServerMain implements Callable<Integer> {
+
+    /** The environment variable that gives the operator token when the command line does not. */
+    public static final String OPERATOR_TOKEN_VARIABLE = "ORCHARD_OPERATOR_TOKEN";
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + WorldServer.DEFAULT_PORT,
             converter = CommandLines.Port.class, description = "TCP port; 0 picks a free one (default: ${DEFAULT-VALUE})")
@@ -97,6 +106,11 @@ public final class ServerMain implements Callable<Integer> {
             description = "Require clients to present this token in their hello")
     private String token;
 
+    @Option(names = "--operator-token", paramLabel = "SECRET", defaultValue = "${env:" + OPERATOR_TOKEN_VARIABLE + "}",
+            description = "Let a client that presents this token in its hello start, pause and resume the game "
+                    + "(GameControl); without it only this console does. Also read from " + OPERATOR_TOKEN_VARIABLE)
+    private String operatorToken;
+
     @Option(names = "--checkpoint", paramLabel = "FILE",
             description = "Save the whole game to FILE: when fruit is collected, at the end, on the console's "
                     + "checkpoint command and every --checkpoint-every seconds")
@@ -115,6 +129,11 @@ public final class ServerMain implements Callable<Integer> {
 
     @Option(names = "--quiet", description = "Do not print the status line every second")
     private boolean quiet;
+
+    @Option(names = "--stop-on-stdin-close",
+            description = "End the game and exit when standard input ends (for a program that starts the server "
+                    + "and holds its input); by default the server runs on")
+    private boolean stopOnStdinClose;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
@@ -180,7 +199,8 @@ public final class ServerMain implements Callable<Integer> {
             if (resume != null) {
                 out.println("resumed from " + resume + ": " + server.status());
             }
-            Thread commands = new Thread(() -> readCommands(server, console, out), "orchard-console");
+            Thread commands = new Thread(() -> readCommands(server, console, out, stopOnStdinClose),
+                    "orchard-console");
             commands.setDaemon(true);
             commands.start();
             while (!server.gameOver().isDone()) {
@@ -223,6 +243,9 @@ public final class ServerMain implements Callable<Integer> {
         if (token != null) {
             builder.token(token);
         }
+        if (operatorToken != null) {
+            builder.operatorToken(operatorToken);
+        }
         if (checkpoint != null) {
             builder.checkpoint(checkpoint, checkpointEvery > 0
                     ? Duration.ofMillis((long) (checkpointEvery * 1000)) : null);
@@ -232,7 +255,8 @@ public final class ServerMain implements Callable<Integer> {
         }
     }
 
-    private static void readCommands(WorldServer server, InputStream console, PrintStream out) {
+    private static void readCommands(WorldServer server, InputStream console, PrintStream out,
+                                     boolean stopOnClose) {
         try (BufferedReader in = new BufferedReader(new InputStreamReader(console, StandardCharsets.UTF_8))) {
             String line;
             while ((line = in.readLine()) != null) {
@@ -248,8 +272,10 @@ public final class ServerMain implements Callable<Integer> {
                         boolean paused = server.phase() == Phase.PAUSED;
                         if (command.equals("pause") == paused) {
                             out.println(paused ? "already paused" : "not paused");
+                        } else if (paused) {
+                            server.resumeGame();
                         } else {
-                            server.togglePause();
+                            server.pauseGame();
                         }
                     }
                     case "status" -> out.println(server.status());
@@ -259,7 +285,22 @@ public final class ServerMain implements Callable<Integer> {
                 }
             }
         } catch (IOException e) {
-            // The console closed: the server goes on without it.
+            // Unreadable input is closed input.
+        }
+        consoleClosed(server, out, stopOnClose);
+    }
+
+    /**
+     * Standard input ended: a server started with {@code < /dev/null} or in the background is still
+     * wanted, so it says so and runs on, unless told to stop.
+     */
+    private static void consoleClosed(WorldServer server, PrintStream out, boolean stop) {
+        if (stop) {
+            out.println("console input closed: the game ends and the server stops (--stop-on-stdin-close)");
+            server.endGame("the server's console input closed");
+        } else {
+            out.println("console input closed: the server runs on without its console; stop it with Ctrl-C or kill "
+                    + ProcessHandle.current().pid() + " (SIGTERM)");
         }
     }
 

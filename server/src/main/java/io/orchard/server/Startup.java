@@ -66,7 +66,7 @@ final class Startup {
         NetServer net;
         try {
             net = NetServer.start(new InetSocketAddress(settings.bind, settings.port), simulation, settings.token,
-                    settings.limits);
+                    settings.operatorToken, settings.limits);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             recorder.close();

@@ -93,6 +93,27 @@ public final class WorldServer implements AutoCloseable {
         simulation.execute(simulation::togglePause);
     }
 
+    /**
+     * Pauses the game if it runs, after what was asked before ({@link #startGame()} included). Safe
+     * from any thread.
+     */
+    public void pauseGame() {
+        simulation.execute(() -> {
+            if (simulation.phase() == Phase.RUNNING) {
+                simulation.togglePause();
+            }
+        });
+    }
+
+    /** Continues the game if it is paused, after what was asked before. Safe from any thread. */
+    public void resumeGame() {
+        simulation.execute(() -> {
+            if (simulation.phase() == Phase.PAUSED) {
+                simulation.togglePause();
+            }
+        });
+    }
+
     /** Ends the game now. Safe from any thread. */
     public void endGame(String reason) {
         simulation.execute(() -> simulation.end(reason));
@@ -224,6 +245,7 @@ public final class WorldServer implements AutoCloseable {
         Duration checkpointEvery;
         Path resume;
         String token;
+        String operatorToken;
         NetLimits limits = NetLimits.DEFAULT;
         Placement placement = (name, radius) -> null;
         final List<GameListener> listeners = new ArrayList<>();
@@ -335,13 +357,40 @@ public final class WorldServer implements AutoCloseable {
             return this;
         }
 
-        /** Require clients to present this shared secret in their hello. */
+        /**
+         * Require clients to present this shared secret in their hello. It admits a client, and
+         * nothing more: controlling the game takes the {@link #operatorToken operator token}.
+         */
         public Builder token(String token) {
             if (token != null && token.isEmpty()) {
                 throw new IllegalArgumentException("token must not be empty");
             }
+            sameAsOther(token, operatorToken);
             this.token = token;
             return this;
+        }
+
+        /**
+         * Let a client that presents this secret in its hello (protocol version 2) start, pause and
+         * resume the game with {@code GameControl}, as the console and {@link WorldServer#startGame()}
+         * and {@link WorldServer#togglePause()} do. Without one (the default) no client controls the
+         * game; every other client's {@code GameControl} is refused with {@code forbidden}. It must
+         * differ from the {@link #token token}, which every client holds.
+         */
+        public Builder operatorToken(String operatorToken) {
+            if (operatorToken != null && operatorToken.isEmpty()) {
+                throw new IllegalArgumentException("operator token must not be empty");
+            }
+            sameAsOther(token, operatorToken);
+            this.operatorToken = operatorToken;
+            return this;
+        }
+
+        private static void sameAsOther(String token, String operatorToken) {
+            if (token != null && token.equals(operatorToken)) {
+                throw new IllegalArgumentException("the operator token must differ from the token: every client"
+                        + " holds the token, and would control the game");
+            }
         }
 
         /** Per-connection limits (rates, timeouts, queues). */

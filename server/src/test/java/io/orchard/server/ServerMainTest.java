@@ -37,8 +37,9 @@ class ServerMainTest {
     void helpListsEveryOptionAndTheConsoleCommands() throws Exception {
         assertThat(run("", "--help")).isZero();
         assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
-                "--record", "--token", "--checkpoint", "--checkpoint-every", "--resume",
-                "Console commands: start, pause, continue, status, checkpoint [FILE], stop");
+                "--record", "--token", "--operator-token", "--checkpoint", "--checkpoint-every", "--resume",
+                "--stop-on-stdin-close", "Console commands: start, pause, continue, status, checkpoint [FILE], stop",
+                "ORCHARD_OPERATOR_TOKEN");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -97,6 +98,62 @@ class ServerMainTest {
         out.reset();
         assertThat(run("", "--port", "0", "--resume", checkpoint.toString(), "--quiet")).isZero();
         assertThat(out()).contains("resumed from", "over", "Game over. Ranking:");
+    }
+
+    @Test
+    void whenTheConsoleInputEndsTheServerSaysSoOnceAndPlaysOn() throws Exception {
+        Path record = dir.resolve("game.ndjson");
+        assertThat(run("start\n", "--port", "0", "--seed", "3", "--time-limit", "0.5", "--tick-rate", "50",
+                "--record", record.toString(), "--quiet")).isZero();
+        assertThat(out().split("console input closed", -1)).as("times the closed input is told").hasSize(2);
+        assertThat(out()).contains("console input closed: the server runs on without its console; stop it with "
+                + "Ctrl-C or kill " + ProcessHandle.current().pid() + " (SIGTERM)", "Game over. Ranking:");
+        assertThat(java.nio.file.Files.readString(record)).contains("\"reason\":\"time limit reached\"");
+    }
+
+    @Test
+    void withStopOnStdinCloseTheEndOfTheConsoleInputEndsTheGameAndTheServer() throws Exception {
+        Path record = dir.resolve("game.ndjson");
+        assertThat(run("", "--port", "0", "--seed", "3", "--record", record.toString(), "--quiet",
+                "--stop-on-stdin-close")).isZero();
+        assertThat(out()).contains("console input closed: the game ends and the server stops "
+                + "(--stop-on-stdin-close)", "Game over. Ranking:");
+        assertThat(java.nio.file.Files.readString(record))
+                .contains("\"reason\":\"the server's console input closed\"");
+    }
+
+    @Test
+    void theConsolePausesAndContinuesTheGame() throws Exception {
+        java.io.PipedOutputStream typed = new java.io.PipedOutputStream();
+        java.io.PipedInputStream console = new java.io.PipedInputStream(typed);
+        java.util.concurrent.CompletableFuture<Integer> exit = java.util.concurrent.CompletableFuture.supplyAsync(
+                () -> ServerMain.run(List.of("--port", "0", "--seed", "3", "--time-limit", "2", "--tick-rate", "50",
+                        "--quiet"), console, new PrintStream(out, true, StandardCharsets.UTF_8),
+                        new PrintStream(err, true, StandardCharsets.UTF_8)));
+        typed.write("start\npause\nstatus\n".getBytes(StandardCharsets.UTF_8));
+        typed.flush();
+        awaitStatusLines("paused  t=", 1);
+        for (int asked = 2; asked <= 3; asked++) {
+            Thread.sleep(300);
+            typed.write("status\n".getBytes(StandardCharsets.UTF_8));
+            typed.flush();
+            awaitStatusLines("paused  t=", asked);
+        }
+        List<String> paused = out().lines().filter(line -> line.startsWith("paused  t=")).toList();
+        assertThat(paused.get(2)).as("the game's time and tick while paused").isEqualTo(paused.get(1));
+        typed.write("continue\n".getBytes(StandardCharsets.UTF_8));
+        typed.close();
+        assertThat(exit.get(30, java.util.concurrent.TimeUnit.SECONDS)).isZero();
+        assertThat(out()).contains("Game over. Ranking:");
+    }
+
+    private void awaitStatusLines(String start, int count) throws InterruptedException {
+        long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
+        while (out().lines().filter(line -> line.startsWith(start)).count() < count) {
+            assertThat(System.nanoTime()).as("waiting for %d lines '%s...' in:%n%s", count, start, out())
+                    .isLessThan(end);
+            Thread.sleep(10);
+        }
     }
 
     @Test

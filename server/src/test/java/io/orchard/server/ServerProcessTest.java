@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
 import io.orchard.protocol.message.GraspResultMessage;
 import io.orchard.protocol.message.MoveMessage;
@@ -15,6 +16,7 @@ import io.orchard.protocol.message.SetRotationMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GameCommand;
 import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Role;
@@ -67,10 +69,21 @@ class ServerProcessTest {
 
     /** Starts {@code ServerMain} in a JVM of its own and returns the port it listens on. */
     private int startServer(Process[] started, String... args) throws Exception {
+        return startServer(started, builder -> { }, new ArrayList<>(), args);
+    }
+
+    /**
+     * Starts {@code ServerMain} in a JVM of its own, as {@code setUp} sets its process up, keeps
+     * every line it writes in {@code written} and returns the port it listens on.
+     */
+    private int startServer(Process[] started, java.util.function.Consumer<ProcessBuilder> setUp, List<String> written,
+                            String... args) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), ServerMain.class.getName()));
         command.addAll(List.of(args));
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true);
+        setUp.accept(builder);
+        Process process = builder.start();
         processes.add(process);
         started[0] = process;
         CompletableFuture<Integer> port = new CompletableFuture<>();
@@ -79,6 +92,7 @@ class ServerProcessTest {
                     StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = lines.readLine()) != null) {
+                    written.add(line);
                     Matcher matcher = LISTENING.matcher(line);
                     if (matcher.find()) {
                         port.complete(Integer.parseInt(matcher.group(1)));
@@ -109,6 +123,38 @@ class ServerProcessTest {
                                        java.util.function.LongFunction<? extends io.orchard.protocol.message.ClientMessage> message)
             throws Exception {
         return (ServerMessage) connection.request(message).get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void aServerStartedWithItsInputClosedRunsOnAndTakesItsOperatorTokenFromTheEnvironment() throws Exception {
+        List<String> output = new java.util.concurrent.CopyOnWriteArrayList<>();
+        Process[] server = new Process[1];
+        int port = startServer(server, builder -> builder.environment().put(ServerMain.OPERATOR_TOKEN_VARIABLE,
+                "op-env-5150"), output, "--port", "0", "--quiet");
+        server[0].getOutputStream().close();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (output.stream().noneMatch(line -> line.startsWith("console input closed: the server runs on"))) {
+            assertThat(System.nanoTime()).as("the server's word on its closed input; it wrote %s", output)
+                    .isLessThan(deadline);
+            Thread.sleep(20);
+        }
+        try (ProtocolConnection operator = ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", null,
+                "op-env-5150", m -> { })) {
+            ServerMessage started = reply(operator, seq -> new GameControlMessage(seq, GameCommand.START));
+            assertThat(started).isInstanceOfSatisfying(ActionResultMessage.class,
+                    result -> assertThat(result.outcome()).isEqualTo(Outcome.ACCEPTED));
+        }
+        assertThat(server[0].isAlive()).as("the server after its input closed").isTrue();
+    }
+
+    @Test
+    void withStopOnStdinCloseAServerWhoseInputClosesStops() throws Exception {
+        Process[] server = new Process[1];
+        List<String> output = new java.util.concurrent.CopyOnWriteArrayList<>();
+        startServer(server, builder -> { }, output, "--port", "0", "--quiet", "--stop-on-stdin-close");
+        server[0].getOutputStream().close();
+        assertThat(server[0].waitFor(20, TimeUnit.SECONDS)).as("the server stopped; it wrote %s", output).isTrue();
+        assertThat(server[0].exitValue()).isZero();
     }
 
     @Test

@@ -3,6 +3,7 @@ package io.orchard.viewer;
 import com.jme3.app.SimpleApplication;
 import com.jme3.math.Vector3f;
 import io.orchard.protocol.value.Vec3;
+import io.orchard.viewer.live.Backoff;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.replay.Recording;
 import io.orchard.viewer.state.AgentsState;
@@ -82,7 +83,8 @@ final class ViewerApp extends SimpleApplication implements RunControl {
             source = () -> String.format(Locale.ROOT, "replay %s  x%s%s%s", file, speed(playing.speed()),
                     playing.isPaused() ? "  paused" : "", playing.now() >= playing.endTime() ? "  (end)" : "");
         } else {
-            live = new LiveState(options.host(), options.port(), options.token(), mirror, this);
+            live = new LiveState(options.host(), options.port(), options.token(), options.operatorToken(),
+                    options.reconnect() ? Backoff.DEFAULT : null, mirror, this);
             stateManager.attach(live);
             clock = live;
             source = live::status;

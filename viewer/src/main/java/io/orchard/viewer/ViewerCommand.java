@@ -31,10 +31,16 @@ import picocli.CommandLine.Spec;
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
         footer = {"Windowed keys: drag to turn the view, right drag to pan, wheel to zoom, W A S D to move, F to fly, "
                 + "click an agent to select and follow it, V for its point of view, Enter to send it an instruction, "
-                + "L for names, K for shadows, H for help; replays: Space pauses, + and - change the speed, the arrow "
-                + "keys seek 10 s, Home goes back to the start.", "",
+                + "L for names, K for shadows, H for help; a live game, with --operator-token: Space pauses and "
+                + "continues it, G starts it; replays: Space pauses, + and - change the speed, the arrow keys seek "
+                + "10 s, Home goes back to the start.", "",
+            "When the connection to a live server ends, the viewer says why and, in a window, connects again "
+                + "(unless --no-reconnect).", "",
             "Exit status: 0 done, 1 failed (no server, a render error, the watchdog), 2 bad command line."})
 final class ViewerCommand implements Callable<Integer> {
+
+    /** The environment variable that gives the operator token when the command line does not. */
+    static final String OPERATOR_TOKEN_VARIABLE = "ORCHARD_OPERATOR_TOKEN";
 
     @Option(names = "--host", paramLabel = "HOST", defaultValue = "localhost",
             description = "The server's host (default: ${DEFAULT-VALUE})")
@@ -46,6 +52,16 @@ final class ViewerCommand implements Callable<Integer> {
 
     @Option(names = "--token", paramLabel = "SECRET", description = "The server's token, when it requires one")
     private String token;
+
+    @Option(names = "--operator-token", paramLabel = "SECRET", defaultValue = "${env:" + OPERATOR_TOKEN_VARIABLE + "}",
+            description = "The server's operator token: Space then pauses and continues the game, G starts it. "
+                    + "Also read from " + OPERATOR_TOKEN_VARIABLE + ", out of sight of ps")
+    private String operatorToken;
+
+    @Option(names = "--no-reconnect", negatable = false,
+            description = "In a window, do not connect again when the connection ends (by default the viewer says "
+                    + "why and tries again, waiting longer each time); a headless run never does")
+    private boolean noReconnect;
 
     @Option(names = "--replay", paramLabel = "FILE",
             description = "Play a recording (written by the server's --record) instead of connecting")
@@ -157,6 +173,9 @@ final class ViewerCommand implements Callable<Integer> {
                 || given.hasMatchedOption("--token"))) {
             throw wrong("--replay plays a file; --host, --port and --token are for a live server");
         }
+        if (replay != null && (given.hasMatchedOption("--operator-token") || noReconnect)) {
+            throw wrong("--replay plays a file; --operator-token and --no-reconnect are for a live server");
+        }
         if (replay == null && given.hasMatchedOption("--speed")) {
             throw wrong("--speed is for --replay; a live game runs at the server's pace");
         }
@@ -194,8 +213,9 @@ final class ViewerCommand implements Callable<Integer> {
         double watchdog = timeout != null ? timeout
                 : ViewerOptions.BASE_TIMEOUT + (replay == null ? lastTime : 0) + (measure == null ? 0 : measure)
                         + (replay == null && every != null && until == null ? 600 : 0);
-        return new ViewerOptions(host, port, token, replay, speed, headless, size.width(), size.height(), shots,
-                every, out, until, camera, lookAt, follow, hud.equals("on"), shadows.equals("on"), watchdog, measure);
+        return new ViewerOptions(host, port, token, operatorToken, replay, speed, headless, size.width(), size.height(),
+                shots, every, out, until, camera, lookAt, follow, hud.equals("on"), shadows.equals("on"), watchdog,
+                measure, !noReconnect);
     }
 
     private ParameterException wrong(String message) {

@@ -12,6 +12,8 @@ import java.util.List;
  * @param host     the server's host
  * @param port     the server's port
  * @param token    the server's shared secret, or null
+ * @param operatorToken the server's operator token, which lets the viewer start, pause and continue
+ *                 the game, or null
  * @param replay   a recording to play instead of connecting, or null
  * @param speed    replay speed: simulated seconds per second
  * @param headless render off screen and exit when done
@@ -28,11 +30,13 @@ import java.util.List;
  * @param shadows  whether shadows are drawn
  * @param timeout  seconds after which a headless run is stopped as failed
  * @param measure  seconds of frame-rate measure, or null
+ * @param reconnect whether a windowed viewer connects again when its connection ends (a headless
+ *                 run never does: it fails)
  */
-public record ViewerOptions(String host, int port, String token, Path replay, double speed, boolean headless,
-                            int width, int height, List<Shot> shots, Double every, Path out, Double until,
-                            Vec3 camera, Vec3 lookAt, String follow, boolean hud, boolean shadows, double timeout,
-                            Double measure) {
+public record ViewerOptions(String host, int port, String token, String operatorToken, Path replay, double speed,
+                            boolean headless, int width, int height, List<Shot> shots, Double every, Path out,
+                            Double until, Vec3 camera, Vec3 lookAt, String follow, boolean hud, boolean shadows,
+                            double timeout, Double measure, boolean reconnect) {
 
     /** The port the viewer connects to unless told otherwise (the server's default). */
     public static final int DEFAULT_PORT = 7557;

@@ -30,6 +30,16 @@ class ViewerOptionsTest {
         assertThat(options.height()).isEqualTo(720);
         assertThat(options.shadows()).isFalse();
         assertThat(options.hud()).isTrue();
+        assertThat(options.reconnect()).as("connects again when the connection ends").isTrue();
+    }
+
+    @Test
+    void theOperatorTokenIsPassedOnAndReconnectingCanBeTurnedOff() {
+        ViewerOptions options = parse("--operator-token op-s3cret --no-reconnect");
+
+        assertThat(options.operatorToken()).isEqualTo("op-s3cret");
+        assertThat(options.reconnect()).isFalse();
+        assertThat(ViewerMain.help()).contains("--operator-token=SECRET", "ORCHARD_OPERATOR_TOKEN", "--no-reconnect");
     }
 
     @Test
@@ -65,6 +75,8 @@ class ViewerOptionsTest {
             "--headless --every 2                                 | --every needs --out DIR",
             "--headless --out shots                               | --out and --until go with --every",
             "--replay game.ndjson --port 7000                     | --replay plays a file",
+            "--replay game.ndjson --operator-token s3cret         | --replay plays a file; --operator-token and --no-reconnect are for a live server",
+            "--replay game.ndjson --no-reconnect                  | --replay plays a file; --operator-token and --no-reconnect are for a live server",
             "--speed 2                                            | --speed is for --replay",
             "--replay g.ndjson --speed 1000                       | option '--speed': '1000' is out of range (expected 0.0625-64",
             "--size 1280                                          | option '--size': '1280' is not a size (expected WIDTHxHEIGHT in pixels",

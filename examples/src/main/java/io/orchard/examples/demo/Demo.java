@@ -11,6 +11,8 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
@@ -24,7 +26,8 @@ import java.util.stream.Stream;
  * One whole match: a realtime server embedded in this JVM, the paper's five agents on threads of
  * it, and a viewer. The game starts once the agents are in and the viewer shows the world, so that
  * the first screenshot is of the start; it ends at the time limit or when all fruit is collected,
- * and the ranking is printed last.
+ * and the ranking is printed last. A viewer in a window is the game's operator, with a token drawn
+ * for this match alone: its Space pauses and continues the game.
  *
  * @param seed      the world's seed, or null to draw one
  * @param timeLimit the game's length in simulated seconds
@@ -56,9 +59,12 @@ record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfb
                 reason.complete(why);
             }
         };
+        byte[] secret = new byte[16];
+        new SecureRandom().nextBytes(secret);
+        String operator = HexFormat.of().formatHex(secret);
         WorldServer.Builder builder = WorldServer.builder().port(0).clock(ClockMode.REALTIME).timeLimit(timeLimit)
                 // Never started by the server itself: the demo starts it when the viewer is ready too.
-                .waitFor(lineup.names().size() + 1).listener(events);
+                .waitFor(lineup.names().size() + 1).listener(events).operatorToken(operator);
         if (seed != null) {
             builder.seed(seed);
         }
@@ -72,11 +78,12 @@ record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfb
             ViewerRun viewer = headless
                     ? HeadlessViewer.start(server.port(), shots(), every, xvfbRun, timeLimit + READY_SECONDS
                             + VIEWER_END_SECONDS, out)
-                    : WindowedViewer.start(server.port(), out, err);
+                    : WindowedViewer.start(server.port(), operator, out, err);
             try (Team team = Team.play(lineup.create(), "127.0.0.1", server.port())) {
                 awaitReady(joined, team, viewer, err);
                 server.startGame();
-                out.println("The game starts.");
+                out.println(headless ? "The game starts."
+                        : "The game starts; Space in the viewer pauses and continues it.");
                 out.flush();
                 List<Score> ranking = awaitGameOver(server, viewer);
                 int status = headless ? finishHeadless(viewer, out, err) : 0;

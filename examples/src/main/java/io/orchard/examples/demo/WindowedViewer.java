@@ -9,8 +9,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 
 /**
- * The viewer in a window, run by {@link ViewerMain} in this JVM on a thread of its own; it ends
- * when its window is closed.
+ * The viewer in a window, run by {@link ViewerMain} in this JVM on a thread of its own, as the
+ * game's operator; it ends when its window is closed.
  */
 final class WindowedViewer implements ViewerRun {
 
@@ -22,12 +22,14 @@ final class WindowedViewer implements ViewerRun {
 
     private WindowedViewer() {}
 
-    static WindowedViewer start(int port, PrintStream out, PrintStream err) {
+    /** Opens the window on the server at {@code port}, with the server's operator token. */
+    static WindowedViewer start(int port, String operatorToken, PrintStream out, PrintStream err) {
         WindowedViewer viewer = new WindowedViewer();
         Thread thread = new Thread(() -> {
             try {
-                viewer.exit.complete(ViewerMain.run(List.of("--host", "127.0.0.1", "--port", String.valueOf(port)),
-                        out, err));
+                // In this JVM, so the token is on no command line that ps could show.
+                viewer.exit.complete(ViewerMain.run(List.of("--host", "127.0.0.1", "--port", String.valueOf(port),
+                        "--operator-token", operatorToken), out, err));
             } catch (RuntimeException | Error e) {
                 viewer.exit.completeExceptionally(e);
             }

@@ -102,7 +102,8 @@ public final class ProtocolConnection implements AutoCloseable {
      * @throws IOException when the server cannot be reached or refuses the handshake; the message
      *                     names the host and port and what went wrong: an {@link UnknownHostException}
      *                     for a host with no address, a {@link ConnectException} when no server
-     *                     listens there
+     *                     listens there, one caused by a {@link HandshakeRefusedException} when the
+     *                     server answered the hello with an error
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, Listener listener)
             throws IOException {
@@ -119,8 +120,21 @@ public final class ProtocolConnection implements AutoCloseable {
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
                                              Listener listener) throws IOException {
-        return connect(host, port, role, clientName, token, role == Role.AGENT
-                ? EnumSet.of(Form.LEAN_PERCEPTION, Form.ACCEPTED_MOVES) : EnumSet.noneOf(Form.class), listener);
+        return handshake(host, port, role, clientName, token, null, defaultForms(role), listener);
+    }
+
+    /**
+     * Connects as the game's operator, who may start, pause and resume the game with
+     * {@code GameControl}, and performs the handshake. A server refuses a wrong operator token as it
+     * refuses a wrong token: the handshake fails with {@code unauthorized}.
+     *
+     * @param token         the server's shared secret, or null when it requires none
+     * @param operatorToken the server's operator token, or null to connect as an ordinary client
+     * @see #connect(String, int, Role, String, Listener)
+     */
+    public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
+                                             String operatorToken, Listener listener) throws IOException {
+        return handshake(host, port, role, clientName, token, operatorToken, defaultForms(role), listener);
     }
 
     /**
@@ -134,13 +148,24 @@ public final class ProtocolConnection implements AutoCloseable {
      */
     public static ProtocolConnection connect(String host, int port, Role role, String clientName, String token,
                                              Set<Form> reads, Listener listener) throws IOException {
+        return handshake(host, port, role, clientName, token, null, reads, listener);
+    }
+
+    /** An agent's client reads the lean form, with its accepted moves answered; a viewer the ordinary lines. */
+    private static Set<Form> defaultForms(Role role) {
+        return role == Role.AGENT ? EnumSet.of(Form.LEAN_PERCEPTION, Form.ACCEPTED_MOVES) : EnumSet.noneOf(Form.class);
+    }
+
+    private static ProtocolConnection handshake(String host, int port, Role role, String clientName, String token,
+                                                String operatorToken, Set<Form> reads, Listener listener)
+            throws IOException {
         Objects.requireNonNull(listener, "listener");
         // Made before connecting: the server's handshake deadline runs from the connection, and a
         // cold JVM's first codec and first encoding can take seconds on a busy machine.
         List<String> forms = reads.isEmpty() ? null : Form.names(reads);
         MessageCodec codec = new MessageCodec();
-        byte[] hello = codec.encodeLine(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token, null,
-                forms));
+        byte[] hello = codec.encodeLine(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token,
+                operatorToken, forms));
         Socket socket = new Socket();
         try {
             socket.setTcpNoDelay(true);
@@ -288,7 +313,7 @@ public final class ProtocolConnection implements AutoCloseable {
             if (message instanceof WelcomeMessage hello) {
                 welcome.complete(hello);
             } else if (message instanceof ErrorMessage error) {
-                welcome.completeExceptionally(new IOException(error.code().wireName() + ": " + error.text()));
+                welcome.completeExceptionally(new HandshakeRefusedException(error));
             }
             return;
         }

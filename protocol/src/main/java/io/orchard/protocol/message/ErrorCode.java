@@ -26,6 +26,11 @@ public enum ErrorCode {
     UNAUTHORIZED("unauthorized"),
     /** The message is not allowed in this client's role (a viewer registering an agent...). */
     WRONG_ROLE("wrong_role"),
+    /**
+     * The client may not do this (version 2): {@code GameControl} from a client that did not present
+     * the operator token in its hello. A version 1 client gets {@link #WRONG_ROLE} instead.
+     */
+    FORBIDDEN("forbidden"),
     /** The named agent is not in the world. */
     UNKNOWN_AGENT("unknown_agent"),
     /** The named agent belongs to another connection. */

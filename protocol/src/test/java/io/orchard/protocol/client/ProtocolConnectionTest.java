@@ -192,7 +192,22 @@ class ProtocolConnectionTest {
                 "server speaks protocol 2, client 1")));
         assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", m -> { }))
                 .isInstanceOf(IOException.class)
-                .hasMessageContaining("version_mismatch: server speaks protocol 2, client 1");
+                .hasMessageContaining("version_mismatch: server speaks protocol 2, client 1")
+                .cause().isInstanceOfSatisfying(HandshakeRefusedException.class, refused -> {
+                    assertThat(refused.error().code()).isEqualTo(ErrorCode.VERSION_MISMATCH);
+                    assertThat(refused.isFinal()).as("the same hello is refused again").isTrue();
+                });
+    }
+
+    @Test
+    void anOperatorTokenTravelsInTheHelloAndAFullServerIsNotARefusalForGood() throws IOException {
+        int port = peer((message, out) -> write(out, new ErrorMessage(message.seq(), ErrorCode.TOO_MANY_AGENTS,
+                "the server takes at most 1 connections; try again later")));
+        assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", null, "op-1",
+                m -> { })).cause().isInstanceOfSatisfying(HandshakeRefusedException.class,
+                        refused -> assertThat(refused.isFinal()).isFalse());
+        assertThat(codec.decodeClient(received.get(0))).isInstanceOfSatisfying(HelloMessage.class,
+                hello -> assertThat(hello.operatorToken()).isEqualTo("op-1"));
     }
 
     @Test

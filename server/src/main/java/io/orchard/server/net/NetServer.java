@@ -43,14 +43,16 @@ public final class NetServer implements AutoCloseable {
      * @param address where to listen (port 0 for any free port)
      * @param inbox   the simulation that receives what clients do
      * @param token   the shared secret clients must present, or null
+     * @param operatorToken the secret that lets a client start, pause and resume the game, or null
+     *                      when no client may
      * @param limits  per-connection limits
      * @throws IOException          when the address cannot be bound, saying why and what to do: the
      *                              port is taken, the address is not this machine's, the port is
      *                              privileged
      * @throws InterruptedException when interrupted while binding
      */
-    public static NetServer start(InetSocketAddress address, Inbox inbox, String token, NetLimits limits)
-            throws IOException, InterruptedException {
+    public static NetServer start(InetSocketAddress address, Inbox inbox, String token, String operatorToken,
+                                  NetLimits limits) throws IOException, InterruptedException {
         EventLoopGroup boss = new MultiThreadIoEventLoopGroup(1, new DefaultThreadFactory("orchard-accept", true),
                 NioIoHandler.newFactory());
         // One I/O thread per core, not Netty's two: the tick thread needs a core of its own.
@@ -66,7 +68,7 @@ public final class NetServer implements AutoCloseable {
                     // A fixed send buffer, not one the kernel grows to megabytes: what a client leaves
                     // unread then waits in its outbox, where the server sees how far behind it is.
                     .childOption(ChannelOption.SO_SNDBUF, SEND_BUFFER_BYTES)
-                    .childHandler(new ServerInitializer(new MessageCodec(), inbox, token, limits))
+                    .childHandler(new ServerInitializer(new MessageCodec(), inbox, token, operatorToken, limits))
                     .bind(address).await();
             if (!bound.isSuccess()) {
                 throw cannotListen(address, bound.cause());

@@ -54,7 +54,10 @@ final class NettySession implements ClientSession {
     /** Flushes whose messages wait in {@link #waiting}. */
     private int waitingFlushes;
 
-    /** Made on the channel's I/O thread, for a channel whose output goes through {@code outbox}. */
+    /**
+     * Made on the channel's I/O thread, for a client that speaks protocol {@code version} on a
+     * channel whose output goes through {@code outbox}.
+     */
     NettySession(long id, Role role, int version, ClientForms forms, Channel channel, SessionContext shared,
                  Outbox outbox) {
         this.id = id;

@@ -20,11 +20,11 @@ final class ServerInitializer extends ChannelInitializer<SocketChannel> {
     private final HelloQueue waitingForHello;
     private final LineSlots largeLines;
 
-    ServerInitializer(MessageCodec codec, Inbox inbox, String token, NetLimits limits) {
+    ServerInitializer(MessageCodec codec, Inbox inbox, String token, String operatorToken, NetLimits limits) {
         this.decoder = new MessageDecoder(codec);
         this.encoder = new MessageEncoder(codec);
         this.limits = limits;
-        this.shared = SessionContext.of(inbox, token, limits);
+        this.shared = SessionContext.of(inbox, token, operatorToken, limits);
         this.admission = new Admission(limits.maxConnections());
         this.waitingForHello = new HelloQueue(limits.maxWaitingForHello());
         this.largeLines = new LineSlots(limits.largeLinesAtOnce());

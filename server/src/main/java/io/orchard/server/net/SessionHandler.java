@@ -13,13 +13,12 @@ import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.Inbox;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -28,7 +27,9 @@ import org.slf4j.LoggerFactory;
  * simulation's {@link Inbox}. Once a client is welcomed it drops the stage that waited for its
  * {@code Hello}, and for a viewer, which only listens, the idle timeout. A registration's model is
  * counted against the caps on models first ({@link ModelStore}) and handed on as the one copy the
- * server keeps. One per channel (it holds the session and the connection's models).
+ * server keeps. Only a client that presented the operator token in its hello may control the game:
+ * anyone else's {@code GameControl} is refused here, at once, and never reaches the simulation.
+ * One per channel (it holds the session, whether it is the operator's, and the connection's models).
  */
 final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
 
@@ -36,16 +37,15 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
 
     private final SessionContext shared;
     private final Inbox inbox;
-    private final byte[] token;
     private final ConnectionModels models = new ConnectionModels();
     private Channel channel;
     private Outbox outbox;
     private NettySession session;
+    private boolean operator;
 
     SessionHandler(SessionContext shared) {
         this.shared = shared;
         this.inbox = shared.inbox();
-        this.token = shared.token() == null ? null : shared.token().getBytes(StandardCharsets.UTF_8);
     }
 
     /**
@@ -70,6 +70,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
             if (message instanceof HelloMessage) {
                 ctx.writeAndFlush(new ErrorMessage(message.seq(), ErrorCode.INVALID_VALUE,
                         "Hello: the handshake is already done"));
+            } else if (message instanceof GameControlMessage control && !operator) {
+                ctx.writeAndFlush(notOperator(control));
             } else if (message instanceof RegisterMessage register && session.role() == Role.AGENT
                     && register.model() != null && register.model().data() != null) {
                 registerWithModel(ctx, register);
@@ -88,11 +90,20 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                     + " to " + ProtocolVersion.CURRENT + ", client asked for " + hello.protocolVersion());
             return;
         }
-        if (token != null && !tokenMatches(hello.token())) {
+        if (shared.token() != null && !shared.token().matches(hello.token())) {
             refuse(ctx, hello, ErrorCode.UNAUTHORIZED, hello.token() == null
                     ? "this server requires a token in Hello" : "wrong token");
             return;
         }
+        // Version 1 has no operator token: a field of that name from a version 1 client is not one.
+        String offered = hello.protocolVersion() >= 2 ? hello.operatorToken() : null;
+        if (offered != null && (shared.operator() == null || !shared.operator().matches(offered))) {
+            refuse(ctx, hello, ErrorCode.UNAUTHORIZED, shared.operator() == null
+                    ? "this server has no operator token: no client controls its game; connect without one"
+                    : "wrong operator token");
+            return;
+        }
+        operator = offered != null;
         ChannelPipeline pipeline = ctx.pipeline();
         if (pipeline.get(HelloDeadline.class) != null) {
             pipeline.remove(HelloDeadline.class);
@@ -104,8 +115,8 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
         long id = shared.sessionIds().incrementAndGet();
         session = new NettySession(id, hello.role(), hello.protocolVersion(), ClientForms.of(hello), ctx.channel(),
                 shared, outbox);
-        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role()).forVersion(hello.protocolVersion()));
-        log.debug("{} connected as '{}'", session, hello.client());
+        ctx.writeAndFlush(inbox.welcome(hello.seq(), hello.role(), hello.protocolVersion()));
+        log.debug("{} connected as '{}'{}", session, hello.client(), operator ? ", the operator" : "");
         inbox.connected(session);
     }
 
@@ -122,9 +133,21 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                         register.resumeToken()));
     }
 
-    private boolean tokenMatches(String offered) {
-        // MessageDigest.isEqual takes time independent of where the bytes differ.
-        return offered != null && MessageDigest.isEqual(token, offered.getBytes(StandardCharsets.UTF_8));
+    /**
+     * The refusal of a game control from a client that is not the operator. Version 1 knows no
+     * {@code forbidden}, and a client skips a value it does not know: it is told {@code wrong_role}.
+     */
+    private ErrorMessage notOperator(GameControlMessage control) {
+        log.debug("{}: GameControl {} refused: not the operator", session, control.command().wireName());
+        String text = "GameControl " + control.command().wireName() + " is the operator's: "
+                + (shared.operator() == null
+                        ? "this server has no operator token, so only its console and the program that embeds it"
+                                + " control the game"
+                        : session.protocolVersion() < 2
+                                ? "it needs the operator token in Hello, which protocol version 1 has not"
+                                : "it needs the server's operator token in Hello (operatorToken)");
+        return new ErrorMessage(control.seq(), session.protocolVersion() < 2 ? ErrorCode.WRONG_ROLE
+                : ErrorCode.FORBIDDEN, text);
     }
 
     private static void refuse(ChannelHandlerContext ctx, HelloMessage hello, ErrorCode code, String text) {

@@ -18,6 +18,9 @@ public interface Inbox {
     /** A client's connection closed; its agents leave the world. */
     void disconnected(ClientSession session, String reason);
 
-    /** The welcome for a new client with this hello's seq and role, describing the world as it is now. */
-    WelcomeMessage welcome(long seq, io.orchard.protocol.value.Role role);
+    /**
+     * The welcome for a new client with this hello's seq, role and protocol version (which the
+     * welcome repeats), describing the world as it is now.
+     */
+    WelcomeMessage welcome(long seq, io.orchard.protocol.value.Role role, int protocolVersion);
 }

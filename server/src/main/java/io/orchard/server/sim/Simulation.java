@@ -1,6 +1,5 @@
 package io.orchard.server.sim;
 
-import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.ClientMessage;
@@ -120,9 +119,10 @@ public final class Simulation implements Inbox {
     }
 
     @Override
-    public WelcomeMessage welcome(long seq, Role role) {
-        return new WelcomeMessage(seq, ProtocolVersion.CURRENT, serverVersion, role, world.bounds(), config.tickRate(),
-                config.clock(), outbox.tick(), config.timeLimit(), GamePhase.valueOf(game.phase().name()));
+    public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+        return new WelcomeMessage(seq, protocolVersion, serverVersion, role, world.bounds(), config.tickRate(),
+                config.clock(), outbox.tick(), config.timeLimit(), GamePhase.valueOf(game.phase().name()))
+                .forVersion(protocolVersion);
     }
 
     // ---- the tick thread ---------------------------------------------------------------------
@@ -189,9 +189,11 @@ public final class Simulation implements Inbox {
     }
 
     void endTick(List<Event> events) {
+        boolean ticking = game.running();
         apply(events);
         boolean scored = false;
-        if (game.running()) {
+        // A pause that came during the tick takes effect once the tick is over, so that none is left half done.
+        if (game.running() || ticking && game.phase() == Phase.PAUSED) {
             long tick = outbox.tick();
             if (lockstep()) {
                 List<Long> present = agentSessions();

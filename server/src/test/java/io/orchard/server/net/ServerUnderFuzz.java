@@ -78,8 +78,8 @@ final class ServerUnderFuzz {
         }
 
         @Override
-        public WelcomeMessage welcome(long seq, Role role) {
-            return sim.welcome(seq, role);
+        public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+            return sim.welcome(seq, role, protocolVersion);
         }
     }
 

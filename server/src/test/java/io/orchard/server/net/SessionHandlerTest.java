@@ -9,10 +9,12 @@ import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GameCommand;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.Inbox;
@@ -48,8 +50,8 @@ class SessionHandlerTest {
         }
 
         @Override
-        public WelcomeMessage welcome(long seq, Role role) {
-            return new WelcomeMessage(seq, 1, "test", role, new Bounds(-1, -1, 1, 1), 20, ClockMode.REALTIME, 0);
+        public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+            return new WelcomeMessage(seq, protocolVersion, "test", role, new Bounds(-1, -1, 1, 1), 20, ClockMode.REALTIME, 0);
         }
     }
 
@@ -57,6 +59,10 @@ class SessionHandlerTest {
 
     private EmbeddedChannel channel(String token) {
         return new EmbeddedChannel(new SessionHandler(SessionContext.of(inbox, token, NetLimits.DEFAULT)));
+    }
+
+    private EmbeddedChannel operatedChannel(String operatorToken) {
+        return new EmbeddedChannel(new SessionHandler(SessionContext.of(inbox, null, operatorToken, NetLimits.DEFAULT)));
     }
 
     private static HelloMessage hello(int version, String token) {
@@ -120,6 +126,15 @@ class SessionHandlerTest {
         assertThat(inbox.connected).hasSize(1);
     }
 
+    @ParameterizedTest
+    @ValueSource(ints = {1, 2})
+    void theWelcomeAndTheSessionSpeakTheVersionOfTheHello(int version) {
+        EmbeddedChannel channel = channel(null);
+        channel.writeInbound(hello(version, null));
+        assertThat(((WelcomeMessage) channel.readOutbound()).protocolVersion()).isEqualTo(version);
+        assertThat(inbox.connected).singleElement().satisfies(s -> assertThat(s.protocolVersion()).isEqualTo(version));
+    }
+
     @Test
     void anIdleConnectionIsToldWhyAndClosed() {
         EmbeddedChannel channel = channel(null);
@@ -140,6 +155,87 @@ class SessionHandlerTest {
             assertThat(channel.pipeline().get(io.netty.handler.timeout.IdleStateHandler.class) != null)
                     .as("idle timeout for a " + role.wireName()).isEqualTo(role == Role.AGENT);
             channel.close();
+        }
+    }
+
+    @Nested
+    class GameControl {
+
+        private final GameControlMessage pause = new GameControlMessage(5, GameCommand.PAUSE);
+
+        private HelloMessage operatorHello(int version, String operatorToken) {
+            return new HelloMessage(1, version, Role.VIEWER, "test", null, operatorToken);
+        }
+
+        @Test
+        void theOperatorsIsHandedToTheSimulation() {
+            EmbeddedChannel channel = operatedChannel("op-s3cret");
+            channel.writeInbound(operatorHello(2, "op-s3cret"));
+            assertThat((Object) channel.readOutbound()).isInstanceOf(WelcomeMessage.class);
+            channel.writeInbound(pause);
+            assertThat(inbox.received).containsExactly(pause);
+            assertThat((Object) channel.readOutbound()).isNull();
+        }
+
+        @Test
+        void anyoneElsesIsForbiddenAndTheConnectionStaysOpen() {
+            EmbeddedChannel channel = operatedChannel("op-s3cret");
+            channel.writeInbound(operatorHello(2, null));
+            channel.readOutbound();
+            channel.writeInbound(pause);
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.FORBIDDEN);
+            assertThat(error.seq()).isEqualTo(5);
+            assertThat(error.text()).isEqualTo("GameControl pause is the operator's: it needs the server's operator"
+                    + " token in Hello (operatorToken)");
+            assertThat(inbox.received).isEmpty();
+            assertThat(channel.isOpen()).isTrue();
+        }
+
+        @Test
+        void withoutAnOperatorTokenNoClientControlsTheGame() {
+            EmbeddedChannel channel = operatedChannel(null);
+            channel.writeInbound(operatorHello(2, null));
+            channel.readOutbound();
+            channel.writeInbound(pause);
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.FORBIDDEN);
+            assertThat(error.text()).contains("this server has no operator token, so only its console and the"
+                    + " program that embeds it control the game");
+            assertThat(inbox.received).isEmpty();
+        }
+
+        @Test
+        void aWrongOperatorTokenIsRefusedAndClosedWithoutSayingWhatIsRight() {
+            EmbeddedChannel channel = operatedChannel("op-s3cret");
+            channel.writeInbound(operatorHello(2, "op-s3cres"));
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.UNAUTHORIZED);
+            assertThat(error.text()).isEqualTo("wrong operator token");
+            assertThat(channel.isOpen()).isFalse();
+            assertThat(inbox.connected).isEmpty();
+        }
+
+        @Test
+        void anOperatorTokenForAServerWithoutOneIsRefusedAndClosed() {
+            EmbeddedChannel channel = operatedChannel(null);
+            channel.writeInbound(operatorHello(2, "op-s3cret"));
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.UNAUTHORIZED);
+            assertThat(error.text()).contains("this server has no operator token");
+            assertThat(channel.isOpen()).isFalse();
+        }
+
+        @Test
+        void aVersion1ClientHasNoOperatorTokenAndIsToldWrongRoleWhichItKnows() {
+            EmbeddedChannel channel = operatedChannel("op-s3cret");
+            channel.writeInbound(operatorHello(1, "op-s3cret"));
+            assertThat(((WelcomeMessage) channel.readOutbound()).protocolVersion()).isEqualTo(1);
+            channel.writeInbound(pause);
+            ErrorMessage error = channel.readOutbound();
+            assertThat(error.code()).isEqualTo(ErrorCode.WRONG_ROLE);
+            assertThat(error.text()).contains("protocol version 1");
+            assertThat(inbox.received).isEmpty();
         }
     }
 

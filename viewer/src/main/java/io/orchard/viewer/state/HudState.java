@@ -39,6 +39,7 @@ public final class HudState extends BaseAppState {
     private static final String KEYS = "drag: turn   right drag: pan   wheel: zoom   W A S D: move   F: fly\n"
             + "click: select and follow   V: its view   Enter: instruct   L: names   K: shadows   H: help   Esc: deselect";
     private static final String REPLAY_KEYS = "Space: pause   + -: speed   left/right: -/+10 s   Home: start";
+    private static final String LIVE_KEYS = "the operator's: Space: pause/continue the game   G: start it";
 
     private final WorldMirror mirror;
     private final SimClock clock;
@@ -105,7 +106,7 @@ public final class HudState extends BaseAppState {
         if (showKeys) {
             boolean replay = getState(ReplayState.class) != null;
             keys.node.setCullHint(helpShown ? Node.CullHint.Inherit : Node.CullHint.Always);
-            keys.show(KEYS + (replay ? "\n" + REPLAY_KEYS : ""), null, margin, margin + keys.textHeight());
+            keys.show(KEYS + "\n" + (replay ? REPLAY_KEYS : LIVE_KEYS), null, margin, margin + keys.textHeight());
         }
     }
 

@@ -9,7 +9,8 @@ import com.jme3.input.controls.KeyTrigger;
 
 /**
  * The keys that are not the camera's: names on or off ({@code L}), the help line ({@code H}),
- * shadow maps on or off ({@code K}), and
+ * shadow maps on or off ({@code K}); for a live game, the operator's pause and continue
+ * ({@code Space}) and start ({@code G}), which tell anyone else whose they are; and
  * for a replay pause ({@code Space}), speed ({@code +} and {@code -} double and halve it), seeking
  * ten seconds back and forth (the arrow keys) and back to the start ({@code Home}).
  */
@@ -17,7 +18,7 @@ public final class KeysState extends BaseAppState implements ActionListener {
 
     private static final double SEEK_STEP = 10;
     private static final String[] MAPPINGS = {"toggleNames", "toggleHelp", "toggleShadows", "togglePause", "speedUp",
-        "slowDown", "seekBack", "seekOn", "seekStart"};
+        "slowDown", "seekBack", "seekOn", "seekStart", "startGame"};
 
     private InputManager input;
 
@@ -33,6 +34,7 @@ public final class KeysState extends BaseAppState implements ActionListener {
         input.addMapping("seekBack", new KeyTrigger(KeyInput.KEY_LEFT));
         input.addMapping("seekOn", new KeyTrigger(KeyInput.KEY_RIGHT));
         input.addMapping("seekStart", new KeyTrigger(KeyInput.KEY_HOME));
+        input.addMapping("startGame", new KeyTrigger(KeyInput.KEY_G));
         input.addListener(this, MAPPINGS);
     }
 
@@ -62,9 +64,21 @@ public final class KeysState extends BaseAppState implements ActionListener {
                 }
             }
             default -> {
+                LiveState live = getState(LiveState.class);
                 if (replay != null) {
                     replayKey(replay, name);
+                } else if (live != null) {
+                    liveKey(live, name);
                 }
+            }
+        }
+    }
+
+    private static void liveKey(LiveState live, String name) {
+        switch (name) {
+            case "togglePause" -> live.togglePause();
+            case "startGame" -> live.startGame();
+            default -> {
             }
         }
     }

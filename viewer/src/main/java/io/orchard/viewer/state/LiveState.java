@@ -2,58 +2,75 @@ package io.orchard.viewer.state;
 
 import com.jme3.app.Application;
 import com.jme3.app.state.BaseAppState;
-import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
-import io.orchard.protocol.value.Role;
+import io.orchard.viewer.live.Backoff;
+import io.orchard.viewer.live.GameControls;
+import io.orchard.viewer.live.ServerLink;
 import io.orchard.viewer.world.LogLine;
 import io.orchard.viewer.world.WorldMirror;
 import java.io.IOException;
+import java.time.Duration;
+import java.util.Locale;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 
 /**
  * The connection to a live server, as a viewer ({@code Role.VIEWER}), and the clock that follows
- * it. The connection's reader thread hands each message to the render thread, which applies it to
- * the {@link WorldMirror}. Between two ticks the clock runs on with the wall clock for at most one
+ * it. The link's reader thread hands each message to the render thread, which applies it to the
+ * {@link WorldMirror}. Between two ticks the clock runs on with the wall clock for at most one
  * tick, so that walks are drawn smoothly without ever running ahead of the server.
  *
- * <p>It also sends what a person types for an agent as an {@code Instruction}.
+ * <p>When the connection ends, the viewer says why in its log, on the status line and among the
+ * panel's news; a windowed viewer then connects again with a growing wait ({@link ServerLink}),
+ * and shows the game anew from the server's snapshot. A headless run fails instead.
+ *
+ * <p>It also sends what a person types for an agent as an {@code Instruction}, and the operator's
+ * start, pause and continue ({@link GameControls}).
  */
 public final class LiveState extends BaseAppState implements SimClock {
-
-    private static final Logger LOG = LoggerFactory.getLogger(LiveState.class);
 
     private final String host;
     private final int port;
     private final String token;
+    private final String operatorToken;
+    private final Backoff backoff;
     private final WorldMirror mirror;
     private final RunControl control;
     private final ExecutorService io = Executors.newSingleThreadExecutor(r -> {
-        Thread thread = new Thread(r, "orchard-viewer-connect");
+        Thread thread = new Thread(r, "orchard-viewer-send");
         thread.setDaemon(true);
         return thread;
     });
-    private volatile ProtocolConnection connection;
+    private ServerLink link;
+    private GameControls controls;
     private double tickPeriod = 0.05;
     private double tickTime = Double.NaN;
     private long tickWall;
     private double shown;
     private String status = "connecting";
+    private boolean connectedBefore;
     private boolean closed;
 
     /**
-     * A connection to the server at {@code host}:{@code port} (with its {@code token}, or null when it needs none)
-     * that keeps {@code mirror} up to date and reports its end to {@code control}.
+     * A connection to the server at {@code host}:{@code port} that keeps {@code mirror} up to date
+     * and reports its end to {@code control}.
+     *
+     * @param token         the server's token, or null when it needs none
+     * @param operatorToken the server's operator token, or null: then the game's controls only say
+     *                      whose they are
+     * @param backoff       the waits before connecting again after the connection ends, or null
+     *                      never to connect again (a headless run always fails instead)
      */
-    public LiveState(String host, int port, String token, WorldMirror mirror, RunControl control) {
+    public LiveState(String host, int port, String token, String operatorToken, Backoff backoff, WorldMirror mirror,
+                     RunControl control) {
         this.host = host;
         this.port = port;
         this.token = token;
+        this.operatorToken = operatorToken;
+        this.backoff = control.headless() ? null : backoff;
         this.mirror = mirror;
         this.control = control;
     }
@@ -61,64 +78,77 @@ public final class LiveState extends BaseAppState implements SimClock {
     @Override
     protected void initialize(Application app) {
         status = "connecting to " + host + ":" + port;
-        io.execute(() -> connect(app));
+        link = new ServerLink(host, port, token, operatorToken, backoff, new ServerLink.Listener() {
+            @Override
+            public void connected() {
+                app.enqueue(LiveState.this::connected);
+            }
+
+            @Override
+            public void welcomed(WelcomeMessage welcome) {
+                app.enqueue(() -> {
+                    tickPeriod = 1.0 / welcome.tickRate();
+                    status = "live " + host + ":" + port + " (" + welcome.clock().name().toLowerCase(Locale.ROOT)
+                            + ", server " + welcome.serverVersion() + (operatorToken != null ? ", operator" : "")
+                            + ")";
+                });
+            }
+
+            @Override
+            public void received(ServerMessage message) {
+                app.enqueue(() -> receive(message));
+            }
+
+            @Override
+            public void ended(String reason, Duration retryIn) {
+                app.enqueue(() -> lost(reason, retryIn));
+            }
+        });
+        controls = new GameControls(link, operatorToken != null, new GameControls.Notes() {
+            @Override
+            public void event(String text) {
+                app.enqueue(() -> mirror.note(LogLine.Kind.EVENT, text));
+            }
+
+            @Override
+            public void problem(String text) {
+                app.enqueue(() -> mirror.note(LogLine.Kind.PROBLEM, text));
+            }
+        });
+        link.start();
     }
 
-    private void connect(Application app) {
-        try {
-            ProtocolConnection opened = ProtocolConnection.connect(host, port, Role.VIEWER, "orchard-viewer", token,
-                    new ProtocolConnection.Listener() {
-                        @Override
-                        public void onMessage(ServerMessage message) {
-                            app.enqueue(() -> receive(message));
-                        }
-
-                        @Override
-                        public void onClosed(Throwable cause) {
-                            app.enqueue(() -> lost(cause));
-                        }
-                    });
-            WelcomeMessage welcome = opened.welcome();
-            connection = opened;
-            app.enqueue(() -> {
-                tickPeriod = 1.0 / welcome.tickRate();
-                status = "live " + host + ":" + port + " (" + welcome.clock().name().toLowerCase(java.util.Locale.ROOT)
-                        + ", server " + welcome.serverVersion() + ")";
-            });
-        } catch (IOException e) {
-            String reason = "cannot connect to the server at " + host + ":" + port + ": " + e.getMessage();
-            LOG.warn(reason);
-            app.enqueue(() -> {
-                status = reason;
-                mirror.note(LogLine.Kind.PROBLEM, reason);
-                if (control.headless()) {
-                    control.failed(reason);
-                }
-            });
+    /** A new connection: after a lost one, the game is shown anew from the snapshot that follows. */
+    private void connected() {
+        if (connectedBefore) {
+            mirror.restart();
+            tickTime = Double.NaN;
+            shown = 0;
+            mirror.note(LogLine.Kind.EVENT, "connected again to " + host + ":" + port);
         }
+        connectedBefore = true;
     }
 
     private void receive(ServerMessage message) {
         if (message instanceof TickMessage tick) {
             tickTime = tick.time();
             tickWall = System.nanoTime();
+            controls.ticked();
         }
         mirror.apply(message);
     }
 
-    private void lost(Throwable cause) {
+    private void lost(String reason, Duration retryIn) {
         if (closed) {
             return;
         }
-        closed = true;
-        String reason = "the server closed the connection" + (cause == null ? "" : ": " + cause.getMessage());
-        status = reason;
-        mirror.note(LogLine.Kind.PROBLEM, reason);
-        LOG.info(reason);
+        status = retryIn == null ? reason : reason + "; connecting again in " + ServerLink.seconds(retryIn);
+        mirror.note(LogLine.Kind.PROBLEM, status);
+        tickTime = Double.NaN;
         // After the game's end a server may well go away: the screenshots then show the final state.
-        if (control.headless() && mirror.gameOver().isEmpty()) {
+        if (control.headless() && (!connectedBefore || mirror.gameOver().isEmpty())) {
             // Ignored when the run has already finished: the first outcome stands.
-            control.failed(reason + " before the viewer was done");
+            control.failed(connectedBefore ? reason + " before the viewer was done" : reason);
         }
     }
 
@@ -140,8 +170,17 @@ public final class LiveState extends BaseAppState implements SimClock {
 
     /** Whether the connection is open, so that instructions can be sent. */
     public boolean isConnected() {
-        ProtocolConnection open = connection;
-        return open != null && open.isOpen();
+        return link != null && link.isConnected();
+    }
+
+    /** Pauses the game, or continues it: the operator's; anyone else is told whose it is. */
+    public void togglePause() {
+        controls.togglePause();
+    }
+
+    /** Starts the game without waiting for more agents: the operator's; anyone else is told whose it is. */
+    public void startGame() {
+        controls.start();
     }
 
     /**
@@ -149,8 +188,7 @@ public final class LiveState extends BaseAppState implements SimClock {
      * for people to see.
      */
     public void sendInstruction(String agent, String text) {
-        ProtocolConnection open = connection;
-        if (open == null || !open.isOpen()) {
+        if (!isConnected()) {
             mirror.note(LogLine.Kind.PROBLEM, "not connected: the instruction for " + agent + " was not sent");
             return;
         }
@@ -158,7 +196,7 @@ public final class LiveState extends BaseAppState implements SimClock {
         Application app = getApplication();
         io.execute(() -> {
             try {
-                open.send(seq -> new InstructionMessage(seq, agent, text, "viewer"));
+                link.send(seq -> new InstructionMessage(seq, agent, text, "viewer"));
             } catch (IOException | RuntimeException e) {
                 app.enqueue(() -> mirror.note(LogLine.Kind.PROBLEM, "instruction for " + agent + " not sent: "
                         + e.getMessage()));
@@ -169,9 +207,8 @@ public final class LiveState extends BaseAppState implements SimClock {
     @Override
     protected void cleanup(Application app) {
         closed = true;
-        ProtocolConnection open = connection;
-        if (open != null) {
-            open.close();
+        if (link != null) {
+            link.close();
         }
         io.shutdownNow();
     }

@@ -185,6 +185,15 @@ public final class WorldMirror {
 
     /** Forgets everything but the listeners, which hear {@link Listener#worldCleared()}. */
     public void clear() {
+        log.clear();
+        restart();
+    }
+
+    /**
+     * Forgets the world and the game but keeps the log, for a new connection whose snapshot
+     * follows (the game may be another one now); the listeners hear {@link Listener#worldCleared()}.
+     */
+    public void restart() {
         snapshot = null;
         fruit.clear();
         agents.clear();
@@ -193,7 +202,6 @@ public final class WorldMirror {
         over = null;
         tick = 0;
         time = 0;
-        log.clear();
         listeners.forEach(Listener::worldCleared);
     }
 

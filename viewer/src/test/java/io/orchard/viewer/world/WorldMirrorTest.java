@@ -243,4 +243,24 @@ class WorldMirrorTest {
         assertThat(mirror.time()).isZero();
         assertThat(heard.events).endsWith("cleared");
     }
+
+    @Test
+    void aRestartForgetsTheGameButKeepsTheLogForTheNextConnectionsSnapshot() {
+        WorldMirror mirror = new WorldMirror();
+        Heard heard = new Heard();
+        mirror.addListener(heard);
+        mirror.apply(snapshot(50, TOMATO));
+        mirror.apply(added("Guppy", new Vec3(0, 0, 0), 0));
+        mirror.apply(new GameOverMessage(9, "time limit reached", List.of(new Score("Guppy", 3, 1))));
+
+        mirror.restart();
+        mirror.apply(snapshot(1));
+
+        assertThat(mirror.agents()).isEmpty();
+        assertThat(mirror.fruit()).isEmpty();
+        assertThat(mirror.gameOver()).as("the new connection's game").isEmpty();
+        assertThat(mirror.time()).as("the new game's time, not the old one's").isEqualTo(1);
+        assertThat(heard.events).containsSubsequence("cleared", "world");
+        assertThat(mirror.log()).extracting(LogLine::text).contains("Guppy joined", "game over: time limit reached");
+    }
 }
