@@ -152,7 +152,7 @@ class AsSpecifiedTest {
         } else if (phase == Phase.OVER) {
             sim.end("stopped");
         }
-        WelcomeMessage welcome = sim.welcome(5, Role.AGENT);
+        WelcomeMessage welcome = sim.welcome(5, Role.AGENT, 2);
         assertThat(welcome.timeLimit()).isEqualTo(30);
         assertThat(welcome.phase()).isEqualTo(GamePhase.valueOf(phase.name()));
         assertThat(welcome.phase().wireName()).isEqualTo(wire);
