@@ -110,6 +110,7 @@ class LeanFormGameTest {
     private static List<String> masked(List<String> lines) {
         return lines.stream()
                 .map(line -> line.replaceFirst("^(\\{\"type\":\"Welcome\",\"seq\":1,\"protocolVersion\":)\\d+", "$1_")
+                        .replaceFirst("(\"type\":\"Welcome\".*),\"timeLimit\":[^,}]+,\"phase\":\"[a-z]+\"", "$1")
                         .replaceFirst("(\"type\":\"Registered\".*),\"resumeToken\":\"[0-9a-f]+\"", "$1")
                         .replaceFirst("(\"type\":\"Registered\".*),\"seed\":-?\\d+", "$1"))
                 .toList();
@@ -138,6 +139,7 @@ class LeanFormGameTest {
             Script script = new Script(out);
             script.send(hello);
             script.send("{\"type\":\"Register\",\"seq\":2,\"name\":\"Guppy\",\"body\":" + BODY + "}");
+            script.setUp();
             String line;
             while ((line = in.readLine()) != null) {
                 lines.add(line);
@@ -165,6 +167,11 @@ class LeanFormGameTest {
 
         Script(OutputStream out) {
             this.out = out;
+        }
+
+        /** The setup turn: a lockstep game starts once it is over. */
+        void setUp() throws IOException {
+            send("{\"type\":\"EndTurn\",\"seq\":" + ++seq + ",\"tick\":0}");
         }
 
         void tick(long tick) throws IOException {

@@ -92,7 +92,7 @@ final class Game {
         if (phase == Phase.RUNNING || phase == Phase.PAUSED) {
             // A game's first tick is 0, wherever it is now.
             GameStartedMessage started = new GameStartedMessage(0, seed, fruitAtStart, config.timeLimit());
-            outbox.send(session, session.role() == Role.VIEWER ? started : started.withoutSeed());
+            outbox.catchUp(session, session.role() == Role.VIEWER ? started : started.withoutSeed());
         }
     }
 

@@ -62,8 +62,11 @@ class AsSpecifiedTest {
         return session;
     }
 
+    /** Registers the agent and, as a lockstep client does, ends its setup turn, which starts a waiting game. */
     private void register(FakeSession session, String name) {
         sim.received(session, new RegisterMessage(++seq, name, TestWorlds.BODY, null));
+        sim.applyNow();
+        sim.received(session, new io.orchard.protocol.message.EndTurnMessage(++seq, 0));
         sim.applyNow();
     }
 
