@@ -107,6 +107,12 @@ public final class ServerMain implements Callable<Integer> {
                     + "wait for their controllers' resume tokens)")
     private Path resume;
 
+    @Option(names = "--name-reservation", paramLabel = "SECONDS", defaultValue = "60",
+            converter = CommandLines.NameReservation.class,
+            description = "How long a dropped agent's name and score stay its controller's: meanwhile only its "
+                    + "resume token registers the name; 0 frees it at once (default: ${DEFAULT-VALUE})")
+    private double nameReservation;
+
     @Option(names = "--quiet", description = "Do not print the status line every second")
     private boolean quiet;
 
@@ -224,6 +230,7 @@ public final class ServerMain implements Callable<Integer> {
         if (resume != null) {
             builder.resume(resume);
         }
+        builder.nameReservation(Duration.ofMillis((long) (nameReservation * 1000)));
     }
 
     private static void readCommands(WorldServer server, InputStream console, PrintStream out) {

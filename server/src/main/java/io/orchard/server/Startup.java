@@ -53,6 +53,7 @@ final class Startup {
         });
         Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
                 settings.placement);
+        simulation.reserveDroppedNames(settings.nameReservation);
         if (saved != null) {
             simulation.restore(saved);
             if (simulation.phase() == Phase.OVER) {

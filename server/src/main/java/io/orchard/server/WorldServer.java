@@ -222,6 +222,7 @@ public final class WorldServer implements AutoCloseable {
         Path checkpointFile;
         Duration checkpointEvery;
         Path resume;
+        Duration nameReservation = Duration.ofSeconds(60);
         String token;
         NetLimits limits = NetLimits.DEFAULT;
         Placement placement = (name, radius) -> null;
@@ -326,6 +327,20 @@ public final class WorldServer implements AutoCloseable {
          */
         public Builder resume(Path file) {
             this.resume = Objects.requireNonNull(file, "checkpoint file to resume");
+            return this;
+        }
+
+        /**
+         * How long the name and score of an agent whose connection dropped stay its controller's
+         * (default 60 s): meanwhile whoever else registers the name gets {@code name_in_use}, saying
+         * when it frees up, and the controller gets the agent back with its resume token. Zero frees
+         * the name at once.
+         */
+        public Builder nameReservation(Duration time) {
+            if (time == null || time.isNegative()) {
+                throw new IllegalArgumentException("name reservation must be zero or more, was " + time);
+            }
+            this.nameReservation = time;
             return this;
         }
 
