@@ -93,13 +93,13 @@ public final class ServerMain implements Callable<Integer> {
 
     @Option(names = "--checkpoint", paramLabel = "FILE",
             description = "Save the whole game to FILE: when fruit is collected, at the end, on the console's "
-                    + "checkpoint command and every --checkpoint-every seconds")
+                    + "checkpoint command, every --checkpoint-every seconds and when asked to end (Ctrl-C, SIGTERM)")
     private Path checkpoint;
 
     @Option(names = "--checkpoint-every", paramLabel = "SECONDS", defaultValue = "60",
             converter = CommandLines.CheckpointEvery.class,
-            description = "With --checkpoint, also save every SECONDS of wall-clock time; 0 for never (default: "
-                    + "${DEFAULT-VALUE})")
+            description = "With --checkpoint, also save every SECONDS of wall-clock time, the most play a crash "
+                    + "loses; 0 for never (default: ${DEFAULT-VALUE})")
     private double checkpointEvery;
 
     @Option(names = "--resume", paramLabel = "FILE",
@@ -160,6 +160,7 @@ public final class ServerMain implements Callable<Integer> {
 
     /** Runs the server as the options say; picocli calls it once they are parsed. */
     @Override
+    @SuppressWarnings("try") // the shutdown hook is a resource only so that it is removed when the game ends
     public Integer call() throws Exception {
         WorldServer.Builder builder = WorldServer.builder();
         try {
@@ -174,7 +175,8 @@ public final class ServerMain implements Callable<Integer> {
             out.println("wrote the world of seed " + seed + " to " + writeScenario);
             return 0;
         }
-        try (WorldServer server = builder.start()) {
+        try (WorldServer server = builder.start();
+             ShutdownSave onEnd = ShutdownSave.install(server, checkpoint != null, out)) {
             out.printf(Locale.ROOT, "Orchard server %s listening on port %d, seed %d, %s clock%n", Version.current(),
                     server.port(), server.seed(), resume != null ? "the saved game's" : clock.wireName());
             if (resume != null) {

@@ -51,6 +51,7 @@ public final class WorldServer implements AutoCloseable {
     private final Recorder recorder;
     private final CompletableFuture<List<Score>> gameOver;
     private final Checkpoints checkpoints;
+    private boolean closed;
 
     WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
                 CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
@@ -186,9 +187,22 @@ public final class WorldServer implements AutoCloseable {
         }
     }
 
-    /** Stops the game and the network, closes the recording and waits for every thread to end. */
+    /** Whether {@link #close()} was called. */
+    synchronized boolean closed() {
+        return closed;
+    }
+
+    /**
+     * Stops the game and the network, waits for the checkpoint being written (if any) and every
+     * thread to end, and closes the recording. Closing again does nothing; a second caller waits
+     * until the first is done.
+     */
     @Override
-    public void close() {
+    public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
         // The clock stops first, so that nothing the closing connections cause reaches the game.
         loop.stop();
         try {
