@@ -23,6 +23,7 @@ import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import java.io.IOException;
+import java.nio.file.Path;
 import java.util.Objects;
 import java.util.SplittableRandom;
 import java.util.function.Consumer;
@@ -100,6 +101,22 @@ public abstract class AgentController {
     public final GameOverMessage run(String host, int port, @Nullable String token)
             throws IOException, InterruptedException {
         return loop.run(host, port, token);
+    }
+
+    /**
+     * Keeps the agent's resume token in {@code file}, so that running the agent again after its
+     * connection dropped, or after its server was restarted from a checkpoint, gets it back where it
+     * was, with its score (docs/protocol.md, 11.4). {@link #run} then registers with the token the
+     * file holds for the agent's name, if any; writes the one the server gives; and removes it when
+     * the game is over. Several agents, in one program or in several, may share one file (a line
+     * each). The file is written whole and renamed into place, readable by its owner only where the
+     * file system has POSIX permissions: a token is the agent's password. A file that cannot be
+     * read or written is logged, and the agent plays without it. Call it before {@code run}.
+     * {@code ./orchard agent} and {@code ./orchard agents} keep theirs in
+     * {@code ~/.orchard/resume-tokens} unless told otherwise ({@code --resume-tokens FILE}).
+     */
+    public final void keepResumeTokensIn(Path file) {
+        loop.keepResumeTokensIn(new ResumeTokenFile(Objects.requireNonNull(file, "resume token file")));
     }
 
     /**
