@@ -28,8 +28,8 @@ import java.util.regex.Pattern;
  * a change takes a lock (a lock in this JVM, then a file lock on {@code <file>.lock} beside it),
  * reads the file, and writes it whole to a temporary file in the same folder that is then renamed
  * over it, so that a reader or a crash finds the old file or the new one, never half of one. A
- * temporary file that a killed writer left ({@code <file><digits>.partial}) is deleted by the next
- * change.
+ * temporary file that a killed writer left ({@code <file><digits>.partial}) is deleted under the
+ * lock by the next change, or by {@link #removeLeftovers()} when a program starts.
  *
  * <p>Where the file system has POSIX permissions, the file, its lock and a folder made for them
  * are their owner's alone (mode 600, 700 for the folder). Elsewhere (Windows) they take the access
@@ -83,6 +83,30 @@ final class ResumeTokenFile {
 
     /** Reads the tokens, lets {@code change} change them, and writes them back, all under the lock. */
     void update(Consumer<Map<String, String>> change) throws IOException {
+        locked(folder -> {
+            Map<String, String> tokens = read();
+            change.accept(tokens);
+            write(folder, tokens);
+        });
+    }
+
+    /**
+     * Deletes the temporary files that writers killed before their rename left, as every change
+     * does first: for a program starting, which may not write for a while. Nothing when there is
+     * no folder yet.
+     */
+    void removeLeftovers() throws IOException {
+        if (Files.isDirectory(file.getParent())) {
+            locked(folder -> { });
+        }
+    }
+
+    private interface UnderLock {
+        void run(Path folder) throws IOException;
+    }
+
+    /** Runs {@code work} holding the lock, after deleting what killed writers left. */
+    private void locked(UnderLock work) throws IOException {
         Path folder = file.getParent();
         createFolder(folder);
         synchronized (LOCKS.computeIfAbsent(file, f -> new Object())) {
@@ -93,9 +117,7 @@ final class ResumeTokenFile {
                     : FileChannel.open(lockFile, options)) {
                 lock.lock(); // held until the channel closes
                 removeLeftovers(folder);
-                Map<String, String> tokens = read();
-                change.accept(tokens);
-                write(folder, tokens);
+                work.run(folder);
             }
         }
     }

@@ -27,9 +27,13 @@ final class ResumeTokens {
         this.agent = agent;
     }
 
-    /** The token to register with: the file's for this agent, or null when it has none. */
+    /**
+     * The token to register with: the file's for this agent, or null when it has none. What writers
+     * killed before their rename left beside the file is deleted first: it holds tokens.
+     */
     @Nullable String toPresent() {
         try {
+            file.removeLeftovers();
             held = file.read().get(agent);
         } catch (IOException e) {
             log.warn("{}: cannot read the resume tokens in {}, registering without one: {}", agent, file.path(),

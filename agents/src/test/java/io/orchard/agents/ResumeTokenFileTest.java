@@ -100,6 +100,19 @@ class ResumeTokenFileTest {
     }
 
     @Test
+    void whatAKilledWriterLeftIsRemovedWhenAProgramStartsEvenBeforeItWrites() throws Exception {
+        Path path = Files.writeString(dir.resolve("tokens"), "Dwarf 0123456789abcdef0123456789abcdef\n");
+        Files.writeString(dir.resolve("tokens977.partial"), "Dwarf 0123");
+
+        new ResumeTokens(new ResumeTokenFile(path), "Dwarf").toPresent();
+
+        assertThat(folder(dir)).containsExactly("tokens", "tokens.lock");
+        assertThat(Files.readString(path)).isEqualTo("Dwarf 0123456789abcdef0123456789abcdef\n"); // not rewritten
+        new ResumeTokenFile(dir.resolve("none").resolve("tokens")).removeLeftovers();
+        assertThat(dir.resolve("none")).doesNotExist();
+    }
+
+    @Test
     void linesThatAreNotANameAndATokenAreSkipped() throws Exception {
         Path path = Files.writeString(dir.resolve("tokens"), "# a comment\n\nDwarf\n Robot x\nBunny 0123 \r\n",
                 StandardCharsets.UTF_8);
