@@ -8,7 +8,6 @@ import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
-import io.orchard.agents.language.Interpreter;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.ErrorMessage;
@@ -24,7 +23,6 @@ import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import java.io.IOException;
-import java.time.Duration;
 import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.random.RandomGenerator;
@@ -117,14 +115,6 @@ public abstract class AgentController {
         loop.stop();
     }
 
-    /**
-     * Sends a keep-alive after this much silence instead of every 30 s, for a server whose idle
-     * rule is shorter than its default 120 s. Call before {@link #run}.
-     */
-    final void keepAliveEvery(Duration silence) {
-        loop.keepAliveEvery(silence);
-    }
-
     /** What the agent registers, as {@link #body()} declares it (asked once). Safe from any thread. */
     public final AgentBody declaredBody() {
         return situation.declared(this::body);
@@ -208,11 +198,8 @@ public abstract class AgentController {
     /** The game is over. */
     protected void onGameOver(GameOverMessage over) {}
 
-    /**
-     * Reads instructions into goals: the default, an {@link InstructionInterpreter}, understands simple
-     * English (docs/instructions.md) and is made once; override to plug in another {@link Interpreter}.
-     */
-    protected Interpreter interpreter() {
+    /** Reads instructions into goals: the default understands simple English (docs/instructions.md), made once. */
+    protected InstructionInterpreter interpreter() {
         return behaviours.interpreter();
     }
 

@@ -54,6 +54,8 @@ final class GameLoop {
     private final AtomicBoolean ran = new AtomicBoolean();
     private final List<Session.Instruction> early = new ArrayList<>();
     private GameOverMessage gameOver;
+    /** Where the agent's resume token is kept across runs; null when it is not. */
+    private volatile ResumeTokens resumeTokens;
 
     GameLoop(AgentController agent, Session session, Situation situation, Turns turns, ControllerMotor motor,
              Tally tally, AgentRandom random) {
@@ -87,12 +89,18 @@ final class GameLoop {
             WelcomeMessage welcome = session.welcome();
             situation.welcomed(welcome);
             turns.welcomed(welcome);
-            Registration.register(session, name, plan, model);
+            ResumeTokens tokens = resumeTokens;
+            Registration.register(session, name, plan, model, tokens == null ? null : tokens.toPresent());
             return play();
         } finally {
             session.close();
             tally.publish();
         }
+    }
+
+    /** Keeps the agent's resume token in {@code file} from its next registration on. Safe from any thread. */
+    void keepResumeTokensIn(ResumeTokenFile file) {
+        resumeTokens = new ResumeTokens(file, name);
     }
 
     /** Hands the agent a console line as an instruction. Safe from any thread. */
@@ -201,6 +209,10 @@ final class GameLoop {
             turns.close();
             tally.scored(name, over.ranking());
             gameOver = over;
+            ResumeTokens tokens = resumeTokens;
+            if (tokens != null) {
+                tokens.gameOver();
+            }
             guarded(() -> agent.onGameOver(over));
         }
     }
@@ -215,6 +227,10 @@ final class GameLoop {
 
     private void registered(RegisteredMessage registered) {
         situation.registered(registered);
+        ResumeTokens tokens = resumeTokens;
+        if (tokens != null) {
+            tokens.registered(registered.resumeToken());
+        }
         AgentBody plan = situation.plan();
         for (String joint : plan.joints()) {
             session.send(s -> new RegisterJointMessage(s, name, joint));

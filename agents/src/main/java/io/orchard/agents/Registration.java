@@ -38,12 +38,15 @@ final class Registration {
         return model.spec();
     }
 
-    /** Registers the agent's body and model, and waits for the server to accept them. */
-    static void register(Session session, String agent, AgentBody plan, @Nullable ModelSpec model)
-            throws IOException, InterruptedException {
+    /**
+     * Registers the agent's body and model, presenting {@code resumeToken} (if any) to get back an
+     * agent of an earlier connection, and waits for the server to accept them.
+     */
+    static void register(Session session, String agent, AgentBody plan, @Nullable ModelSpec model,
+                         @Nullable String resumeToken) throws IOException, InterruptedException {
         Reply reply;
         try {
-            reply = session.request(seq -> new RegisterMessage(seq, agent, plan.body(), model))
+            reply = session.request(seq -> new RegisterMessage(seq, agent, plan.body(), model, resumeToken))
                     .get(REPLY_TIMEOUT_SECONDS, TimeUnit.SECONDS);
         } catch (ExecutionException e) {
             throw new IOException("registration of " + agent + " failed: " + e.getCause().getMessage(), e.getCause());

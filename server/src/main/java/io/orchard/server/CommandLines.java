@@ -54,6 +54,12 @@ final class CommandLines {
         }
     }
 
+    static final class NameReservation extends Decimal {
+        NameReservation() {
+            super(0, 1e7, "0-10000000 seconds; 0 frees a dropped agent's name at once");
+        }
+    }
+
     /** A clock mode by its name in any case: realtime or lockstep. */
     static final class Clock implements ITypeConverter<ClockMode>, Iterable<String> {
         @Override

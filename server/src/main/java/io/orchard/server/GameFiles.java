@@ -48,6 +48,24 @@ final class GameFiles {
     }
 
     /**
+     * Deletes what writes of the checkpoint {@code file} (null: none) left unfinished when a process
+     * was killed during one, and logs each file deleted. A folder that cannot be read is logged, and
+     * the server starts all the same: the checkpoint's own write will say what is wrong with it.
+     */
+    static void removeLeftovers(Path file) {
+        if (file == null) {
+            return;
+        }
+        try {
+            for (Path leftover : CheckpointFile.removeLeftovers(file)) {
+                LOG.info("removed {}, left by a checkpoint's write that was cut short", leftover);
+            }
+        } catch (IOException e) {
+            LOG.warn("cannot look for unfinished checkpoint writes beside {}: {}", file, e.toString());
+        }
+    }
+
+    /**
      * The recording of {@code --record}, after what the file holds when {@code append}. A missing
      * folder is created, and the log says so, so that a mistyped folder does not go unnoticed.
      */

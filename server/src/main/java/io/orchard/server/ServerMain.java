@@ -113,19 +113,25 @@ public final class ServerMain implements Callable<Integer> {
 
     @Option(names = "--checkpoint", paramLabel = "FILE",
             description = "Save the whole game to FILE: when fruit is collected, at the end, on the console's "
-                    + "checkpoint command and every --checkpoint-every seconds")
+                    + "checkpoint command, every --checkpoint-every seconds and when asked to end (Ctrl-C, SIGTERM)")
     private Path checkpoint;
 
     @Option(names = "--checkpoint-every", paramLabel = "SECONDS", defaultValue = "60",
             converter = CommandLines.CheckpointEvery.class,
-            description = "With --checkpoint, also save every SECONDS of wall-clock time; 0 for never (default: "
-                    + "${DEFAULT-VALUE})")
+            description = "With --checkpoint, also save every SECONDS of wall-clock time, the most play a crash "
+                    + "loses; 0 for never (default: ${DEFAULT-VALUE})")
     private double checkpointEvery;
 
     @Option(names = "--resume", paramLabel = "FILE",
             description = "Continue the game saved in a checkpoint FILE (its world, seed, clock, scores; its agents "
                     + "wait for their controllers' resume tokens)")
     private Path resume;
+
+    @Option(names = "--name-reservation", paramLabel = "SECONDS", defaultValue = "60",
+            converter = CommandLines.NameReservation.class,
+            description = "How long a dropped agent's name and score stay its controller's: meanwhile only its "
+                    + "resume token registers the name; 0 frees it at once (default: ${DEFAULT-VALUE})")
+    private double nameReservation;
 
     @Option(names = "--quiet", description = "Do not print the status line every second")
     private boolean quiet;
@@ -179,6 +185,7 @@ public final class ServerMain implements Callable<Integer> {
 
     /** Runs the server as the options say; picocli calls it once they are parsed. */
     @Override
+    @SuppressWarnings("try") // the shutdown hook is a resource only so that it is removed when the game ends
     public Integer call() throws Exception {
         WorldServer.Builder builder = WorldServer.builder();
         try {
@@ -193,7 +200,8 @@ public final class ServerMain implements Callable<Integer> {
             out.println("wrote the world of seed " + seed + " to " + writeScenario);
             return 0;
         }
-        try (WorldServer server = builder.start()) {
+        try (WorldServer server = builder.start();
+             ShutdownSave onEnd = ShutdownSave.install(server, checkpoint != null, out)) {
             out.printf(Locale.ROOT, "Orchard server %s listening on port %d, seed %d, %s clock%n", Version.current(),
                     server.port(), server.seed(), resume != null ? "the saved game's" : clock.wireName());
             if (resume != null) {
@@ -253,6 +261,7 @@ public final class ServerMain implements Callable<Integer> {
         if (resume != null) {
             builder.resume(resume);
         }
+        builder.nameReservation(Duration.ofMillis((long) (nameReservation * 1000)));
     }
 
     private static void readCommands(WorldServer server, InputStream console, PrintStream out,

@@ -28,6 +28,8 @@ final class Startup {
     private Startup() {}
 
     static WorldServer start(WorldServer.Builder settings) throws IOException {
+        GameFiles.removeLeftovers(settings.checkpointFile);
+        GameFiles.removeLeftovers(settings.resume);
         Checkpoint saved = settings.resume != null ? GameFiles.checkpoint(settings.resume) : null;
         long actualSeed = saved != null ? saved.seed()
                 : settings.seed != null ? settings.seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
@@ -53,6 +55,7 @@ final class Startup {
         });
         Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
                 settings.placement);
+        simulation.reserveDroppedNames(settings.nameReservation);
         if (saved != null) {
             simulation.restore(saved);
             if (simulation.phase() == Phase.OVER) {

@@ -65,6 +65,30 @@ class WorldServerStartTest {
     }
 
     @Test
+    void whatACheckpointWriteCutShortLeftIsRemovedAtStartAndNothingElse() throws IOException {
+        Path checkpoint = dir.resolve("game.json");
+        // Files.createTempFile's names, as a write killed before its rename leaves them
+        Path leftover = Files.writeString(dir.resolve("game.json8406131295447466421.partial"), "{\"format\":2,\"see");
+        Path another = Files.writeString(dir.resolve("game.json17.partial"), "");
+        List<Path> kept = List.of(Files.writeString(dir.resolve("game.json.partial"), "mine"),
+                Files.writeString(dir.resolve("other.json123.partial"), "not this server's"),
+                Files.writeString(dir.resolve("game.json123.partial.bak"), "mine too"));
+        Logger log = (Logger) LoggerFactory.getLogger(GameFiles.class);
+        ListAppender<ILoggingEvent> logged = new ListAppender<>();
+        logged.start();
+        log.addAppender(logged);
+        try (WorldServer server = WorldServer.builder().port(0).seed(1).checkpoint(checkpoint, null).start()) {
+            assertThat(leftover).doesNotExist();
+            assertThat(another).doesNotExist();
+            assertThat(kept).allMatch(Files::exists);
+            assertThat(logged.list).extracting(ILoggingEvent::getFormattedMessage)
+                    .contains("removed " + leftover + ", left by a checkpoint's write that was cut short");
+        } finally {
+            log.detachAppender(logged);
+        }
+    }
+
+    @Test
     void aRecordingIntoAMissingFolderCreatesItAndSaysSo() throws IOException {
         Path recording = dir.resolve("runs").resolve("today").resolve("game.ndjson");
         Logger log = (Logger) LoggerFactory.getLogger(GameFiles.class);

@@ -22,14 +22,19 @@ import picocli.CommandLine;
  * The command lines that run the zoo's agents against a server.
  *
  * <ul>
- *   <li>{@code ./orchard agent --type dwarf [--name N] [--host H] [--port P] [--token T]}: one
- *       agent. Each line typed on the console is an instruction for it in English ("pick up the
- *       coconut on the table", "cross the bridge", "stop", "carry on"); what it says, answers
- *       included, is printed.
- *   <li>{@code ./orchard agents [--host H] [--port P] [--token T]}: all five, in one process,
- *       each on its own connection. A console line starting with an agent's name instructs that
- *       agent ("Dwarf: collect a banana", or "Guppy, stop").
+ *   <li>{@code ./orchard agent --type dwarf [--name N] [--host H] [--port P] [--token T]
+ *       [--resume-tokens FILE]}: one agent. Each line typed on the console is an instruction for it
+ *       in English ("pick up the coconut on the table", "cross the bridge", "stop", "carry on");
+ *       what it says, answers included, is printed.
+ *   <li>{@code ./orchard agents [--host H] [--port P] [--token T] [--resume-tokens FILE]}: all
+ *       five, in one process, each on its own connection. A console line starting with an agent's
+ *       name instructs that agent ("Dwarf: collect a banana", or "Guppy, stop").
  * </ul>
+ *
+ * <p>Both keep their agents' resume tokens in a file readable by its owner only,
+ * {@code ~/.orchard/resume-tokens} unless {@code --resume-tokens FILE} names another, and present
+ * them when they register: run again after a dropped connection, or after the server was restarted
+ * with {@code --resume}, the same command gets the agents back with their places and scores.
  *
  * <p>Both print the ranking and what each agent did when the game is over. The exit status is 0
  * when the game ended, 1 when an agent could not play (no server, a model that fails its check)

@@ -31,6 +31,9 @@ final class AgentsCommand implements Callable<Integer> {
     @Mixin
     private ServerAddress server;
 
+    @Mixin
+    private ResumeTokensOption resumeTokens;
+
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
 
@@ -49,6 +52,7 @@ final class AgentsCommand implements Callable<Integer> {
         Map<String, AgentController> byName = new LinkedHashMap<>();
         for (Species species : Species.values()) {
             AgentController agent = species.create();
+            resumeTokens.keep(agent);
             agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);
         }

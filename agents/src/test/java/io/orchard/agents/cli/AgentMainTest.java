@@ -9,9 +9,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.InputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -38,8 +40,10 @@ class AgentMainTest {
         @Test
         void theHelpListsEveryOption() throws Exception {
             assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [OPTIONS]", "--type=TYPE",
-                    "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--help");
-            assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N")
+                    "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--resume-tokens=FILE",
+                    "(default: " + Path.of(System.getProperty("user.home"), ".orchard", "resume-tokens"), "--help");
+            assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N",
+                    "--resume-tokens=FILE")
                     .doesNotContain("--type");
             assertThat(AgentMain.agent(List.of("--help"), console(""), print(out), print(err))).isZero();
             assertThat(out()).contains("Usage: orchard agent");
@@ -79,12 +83,17 @@ class AgentMainTest {
     @Nested
     class Playing {
 
+        /** Where the agents keep their tokens, instead of the home folder. */
+        @TempDir
+        Path tokens;
+
         @Test
         void oneAgentTakesConsoleLinesAsInstructionsAndPrintsWhatItSays() throws Exception {
             try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(20)
                     .start()) {
                 int status = AgentMain.agent(List.of("--type", "guppy", "--name", "Gup", "--host", "127.0.0.1",
-                        "--port", String.valueOf(server.port())), console("explore\n\ndance\n"), print(out), print(err));
+                        "--port", String.valueOf(server.port()), "--resume-tokens", tokens.resolve("resume-tokens").toString()),
+                        console("explore\n\ndance\n"), print(out), print(err));
 
                 assertThat(status).isZero();
             }
@@ -96,7 +105,8 @@ class AgentMainTest {
         void allFiveTakeInstructionsAddressedByName() throws Exception {
             try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(10)
                     .waitFor(5).start()) {
-                int status = AgentMain.agents(List.of("--host", "127.0.0.1", "--port", String.valueOf(server.port())),
+                int status = AgentMain.agents(List.of("--host", "127.0.0.1", "--port", String.valueOf(server.port()),
+                        "--resume-tokens", tokens.resolve("resume-tokens").toString()),
                         console("Dwarf: stop\nroadrunner carry on\nGuppy, turn left\nnobody: hello\n"), print(out), print(err));
 
                 assertThat(status).isZero();

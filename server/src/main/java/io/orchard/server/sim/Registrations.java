@@ -59,8 +59,8 @@ final class Registrations {
     private final SecureRandom secrets = new SecureRandom();
     /** Agents of a restored game, waiting for their controllers: their names are reserved. */
     private final Map<String, Checkpoint.SavedAgent> waiting = new LinkedHashMap<>();
-    /** Agents whose connection dropped, kept so that their controllers can get them back. */
-    private final Map<String, Checkpoint.SavedAgent> departed = new LinkedHashMap<>();
+    /** Agents whose connection dropped, kept so that their controllers can get them back; their names reserved. */
+    final Departures departed = new Departures();
 
     Registrations(World world, SimulationConfig config, long seed, Placement placement, Map<String, Agent> agents,
                   Scoreboard scores, Walking walking, Game game, Outbox outbox, List<GameListener> listeners) {
@@ -81,6 +81,9 @@ final class Registrations {
         long seq = register.seq();
         String name = register.name();
         Checkpoint.SavedAgent reserved = waiting.get(name);
+        Checkpoint.SavedAgent left = departed.of(name);
+        boolean leftWithToken = left != null && tokenMatches(left.resumeToken(), register.resumeToken());
+        String keptForItsController = left != null && !leftWithToken ? departed.whyReserved(name) : null;
         if (session.role() != Role.AGENT) {
             refuse(session, seq, ErrorCode.WRONG_ROLE, "a viewer cannot register agents");
         } else if (game.phase() == Phase.OVER) {
@@ -90,6 +93,8 @@ final class Registrations {
         } else if (reserved != null && !tokenMatches(reserved.resumeToken(), register.resumeToken())) {
             refuse(session, seq, ErrorCode.NAME_IN_USE, "agent '" + name + "' of the saved game is "
                     + "waiting for its controller: register it with its resumeToken");
+        } else if (keptForItsController != null) {
+            refuse(session, seq, ErrorCode.NAME_IN_USE, keptForItsController);
         } else if (agents.values().stream().filter(a -> a.owner == session).count() >= config.agentsPerSession()) {
             refuse(session, seq, ErrorCode.TOO_MANY_AGENTS, "a connection may drive at most "
                     + config.agentsPerSession() + " agents");
@@ -100,10 +105,9 @@ final class Registrations {
             if (waiting.isEmpty()) {
                 game.allBack();
             }
-        } else if (departed.containsKey(name)
-                && tokenMatches(departed.get(name).resumeToken(), register.resumeToken())) {
-            if (resume(session, seq, departed.get(name))) {
-                departed.remove(name);
+        } else if (leftWithToken) {
+            if (resume(session, seq, left)) {
+                departed.forget(name);
             }
         } else if (scores.size() >= maxNames && !scores.has(name)) {
             refuse(session, seq, ErrorCode.TOO_MANY_AGENTS, "this game has had " + maxNames
@@ -119,18 +123,20 @@ final class Registrations {
                 return;
             }
             double heading = Angles.normalise(draws.nextDouble() * 2 * Math.PI - Math.PI);
-            departed.remove(name);
+            departed.forget(name);
             enter(session, seq, new Agent(name, session, body, register.model(), place, heading, newToken()));
             game.agentEntered(agents.size());
         }
     }
 
-    /** A connection closed: its agents leave, kept so that their controllers can get them back. */
+    /**
+     * A connection closed: its agents leave, kept so that their controllers can get them back, and
+     * their names reserved for them for a while ({@link Departures}).
+     */
     void leave(ClientSession session, String reason) {
         List<Agent> owned = agents.values().stream().filter(a -> a.owner == session).toList();
         for (Agent agent : owned) {
-            departed.remove(agent.name);
-            departed.put(agent.name, agent.saved());
+            departed.left(agent.saved());
             remove(agent, reason);
         }
     }

@@ -20,6 +20,7 @@ import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
 import io.orchard.server.world.World;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -384,6 +385,18 @@ public final class Simulation implements Inbox {
             outbox.release(); // it started long ago: nothing to hold until the start
         }
         checkpoints.restored(game.phase());
+    }
+
+    /**
+     * How long the name and score of an agent whose connection dropped stay its controller's (60 s
+     * unless set): meanwhile whoever else registers the name gets {@code name_in_use}, saying when
+     * it frees up, and the controller gets the agent back with its resume token. Zero frees the
+     * name at once. Call before the simulation's thread starts.
+     *
+     * @throws IllegalArgumentException when {@code time} is negative
+     */
+    public void reserveDroppedNames(Duration time) {
+        registrations.departed.reserveFor(time);
     }
 
     /** Names of the agents of a restored game that are still waiting for their controllers. */
