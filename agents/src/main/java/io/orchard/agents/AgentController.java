@@ -8,6 +8,7 @@ import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.Interpreter;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.ErrorMessage;
@@ -23,6 +24,8 @@ import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.random.RandomGenerator;
@@ -102,6 +105,22 @@ public abstract class AgentController {
     }
 
     /**
+     * Keeps the agent's resume token in {@code file}, so that running the agent again after its
+     * connection dropped, or after its server was restarted from a checkpoint, gets it back where it
+     * was, with its score (docs/protocol.md, 11.4). {@link #run} then registers with the token the
+     * file holds for the agent's name, if any; writes the one the server gives; and removes it when
+     * the game is over. Several agents, in one program or in several, may share one file (a line
+     * each). The file is written whole and renamed into place, readable by its owner only where the
+     * file system has POSIX permissions: a token is the agent's password. A file that cannot be
+     * read or written is logged, and the agent plays without it. Call it before {@code run}.
+     * {@code ./orchard agent} and {@code ./orchard agents} keep theirs in
+     * {@code ~/.orchard/resume-tokens} unless told otherwise ({@code --resume-tokens FILE}).
+     */
+    public final void keepResumeTokensIn(Path file) {
+        loop.keepResumeTokensIn(new ResumeTokenFile(Objects.requireNonNull(file, "resume token file")));
+    }
+
+    /**
      * Hands the agent an instruction as if a person had sent it ({@link #onInstruction} with
      * {@code from} "console"). Instructions given before the agent's first perception are kept
      * until then, so that they are grounded in what it sees. Safe from any thread.
@@ -113,6 +132,14 @@ public abstract class AgentController {
     /** Leaves the game: closes the connection, and {@link #run} returns. Safe from any thread. */
     public final void stop() {
         loop.stop();
+    }
+
+    /**
+     * Sends a keep-alive after this much silence instead of every 30 s, for a server whose idle
+     * rule is shorter than its default 120 s. Call before {@link #run}.
+     */
+    final void keepAliveEvery(Duration silence) {
+        loop.keepAliveEvery(silence);
     }
 
     /** What the agent registers, as {@link #body()} declares it (asked once). Safe from any thread. */
@@ -198,8 +225,11 @@ public abstract class AgentController {
     /** The game is over. */
     protected void onGameOver(GameOverMessage over) {}
 
-    /** Reads instructions into goals: the default understands simple English (docs/instructions.md), made once. */
-    protected InstructionInterpreter interpreter() {
+    /**
+     * Reads instructions into goals: the default, an {@link InstructionInterpreter}, understands simple
+     * English (docs/instructions.md) and is made once; override to plug in another {@link Interpreter}.
+     */
+    protected Interpreter interpreter() {
         return behaviours.interpreter();
     }
 

@@ -51,6 +51,7 @@ public final class WorldServer implements AutoCloseable {
     private final Recorder recorder;
     private final CompletableFuture<List<Score>> gameOver;
     private final Checkpoints checkpoints;
+    private boolean closed;
 
     WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
                 CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
@@ -207,9 +208,22 @@ public final class WorldServer implements AutoCloseable {
         }
     }
 
-    /** Stops the game and the network, closes the recording and waits for every thread to end. */
+    /** Whether {@link #close()} was called. */
+    synchronized boolean closed() {
+        return closed;
+    }
+
+    /**
+     * Stops the game and the network, waits for the checkpoint being written (if any) and every
+     * thread to end, and closes the recording. Closing again does nothing; a second caller waits
+     * until the first is done.
+     */
     @Override
-    public void close() {
+    public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
         // The clock stops first, so that nothing the closing connections cause reaches the game.
         loop.stop();
         try {
@@ -244,6 +258,7 @@ public final class WorldServer implements AutoCloseable {
         Path checkpointFile;
         Duration checkpointEvery;
         Path resume;
+        Duration nameReservation = Duration.ofSeconds(60);
         String token;
         String operatorToken;
         NetLimits limits = NetLimits.DEFAULT;
@@ -354,6 +369,20 @@ public final class WorldServer implements AutoCloseable {
          */
         public Builder resume(Path file) {
             this.resume = Objects.requireNonNull(file, "checkpoint file to resume");
+            return this;
+        }
+
+        /**
+         * How long the name and score of an agent whose connection dropped stay its controller's
+         * (default 60 s): meanwhile whoever else registers the name gets {@code name_in_use}, saying
+         * when it frees up, and the controller gets the agent back with its resume token. Zero frees
+         * the name at once.
+         */
+        public Builder nameReservation(Duration time) {
+            if (time == null || time.isNegative()) {
+                throw new IllegalArgumentException("name reservation must be zero or more, was " + time);
+            }
+            this.nameReservation = time;
             return this;
         }
 

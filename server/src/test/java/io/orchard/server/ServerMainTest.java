@@ -38,8 +38,8 @@ class ServerMainTest {
         assertThat(run("", "--help")).isZero();
         assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
                 "--record", "--token", "--operator-token", "--checkpoint", "--checkpoint-every", "--resume",
-                "--stop-on-stdin-close", "Console commands: start, pause, continue, status, checkpoint [FILE], stop",
-                "ORCHARD_OPERATOR_TOKEN");
+                "--name-reservation", "--stop-on-stdin-close",
+                "Console commands: start, pause, continue, status, checkpoint [FILE], stop", "ORCHARD_OPERATOR_TOKEN");
     }
 
     @ParameterizedTest(name = "{0}")
@@ -49,6 +49,7 @@ class ServerMainTest {
         clock misspelled | --clock=lockstop   | invalid value for option '--clock': 'lockstop' is not a clock (expected one of realtime, lockstep)
         seed not number  | --seed=abc         | invalid value for option '--seed': 'abc' is not an integer
         negative every   | --checkpoint-every=-1 | invalid value for option '--checkpoint-every': '-1' is out of range
+        negative keeping | --name-reservation=-5 | invalid value for option '--name-reservation': '-5' is out of range (expected 0-10000000 seconds; 0 frees a dropped agent's name at once)
         port given twice | --port=1 --port=2  | option '--port' (N) should be specified only once
         no value         | --port             | missing required parameter for option '--port' (N)
         stray argument   | 7557               | unexpected argument '7557'

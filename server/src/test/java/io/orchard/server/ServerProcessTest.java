@@ -11,8 +11,10 @@ import io.orchard.protocol.message.GraspResultMessage;
 import io.orchard.protocol.message.MoveMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.RegisteredMessage;
+import io.orchard.protocol.message.Reply;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.SetRotationMessage;
+import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.ClockMode;
@@ -61,6 +63,8 @@ class ServerProcessTest {
     Path dir;
 
     private final List<Process> processes = new ArrayList<>();
+    /** What the servers printed, line by line. */
+    private final List<String> printed = java.util.Collections.synchronizedList(new ArrayList<>());
 
     @AfterEach
     void killAll() {
@@ -93,6 +97,7 @@ class ServerProcessTest {
                 String line;
                 while ((line = lines.readLine()) != null) {
                     written.add(line);
+                    printed.add(line);
                     Matcher matcher = LISTENING.matcher(line);
                     if (matcher.find()) {
                         port.complete(Integer.parseInt(matcher.group(1)));
@@ -218,5 +223,135 @@ class ServerProcessTest {
             assertThat(back.position().x()).isCloseTo(-20, org.assertj.core.data.Offset.offset(1e-6));
             assertThat(back.position().z()).isCloseTo(-19, org.assertj.core.data.Offset.offset(1e-6));
         }
+    }
+
+    /** A Tick as an agent heard it, and when. */
+    private record Heard(long tick, long nanos) {}
+
+    /** An agent that registers Guppy (with {@code token}, if any) and hears every tick, noting when. */
+    private static ProtocolConnection guppy(int port, String token, List<Heard> ticks, String[] tokenGiven)
+            throws Exception {
+        ProtocolConnection agent = null;
+        for (int attempt = 1; agent == null; attempt++) {
+            try {
+                agent = ProtocolConnection.connect("127.0.0.1", port, Role.AGENT, "test", m -> {
+                    if (m instanceof TickMessage tick) {
+                        ticks.add(new Heard(tick.tick(), System.nanoTime()));
+                    }
+                });
+            } catch (IOException e) {
+                // A server just started on a busy machine may not read the first Hello within its
+                // 5 s, its JVM still warming up; a second try finds it ready.
+                if (attempt == 3 || !String.valueOf(e.getMessage()).contains("no Hello within")) {
+                    throw e;
+                }
+            }
+        }
+        Reply reply = agent.request(seq -> new RegisterMessage(seq, "Guppy", BODY, null, token))
+                .get(10, TimeUnit.SECONDS);
+        assertThat(reply).isInstanceOf(RegisteredMessage.class);
+        tokenGiven[0] = ((RegisteredMessage) reply).resumeToken();
+        return agent;
+    }
+
+    private static long lastHeard(List<Heard> ticks) {
+        synchronized (ticks) {
+            return ticks.isEmpty() ? -1 : ticks.get(ticks.size() - 1).tick();
+        }
+    }
+
+    private static void awaitTick(List<Heard> ticks, long tick) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (lastHeard(ticks) < tick) {
+            assertThat(System.nanoTime()).as("tick %d within 60 s", tick).isLessThan(deadline);
+            Thread.sleep(10);
+        }
+    }
+
+    @Test
+    void aServerKilledAfterManyTicksLosesAtMostOneCheckpointIntervalAndRecordsEveryTickItSent() throws Exception {
+        Path checkpoint = dir.resolve("game.json");
+        Path recording = dir.resolve("game.ndjson");
+        double interval = 1;
+        int tickRate = 20;
+        Process[] first = new Process[1];
+        int port = startServer(first, "--port", "0", "--seed", "5", "--tick-rate", "" + tickRate, "--checkpoint",
+                checkpoint.toString(), "--checkpoint-every", "" + interval, "--record", recording.toString(),
+                "--quiet");
+        List<Heard> ticks = java.util.Collections.synchronizedList(new ArrayList<>());
+        String[] token = new String[1];
+        long killedAt;
+        long lastSeen;
+        try (ProtocolConnection agent = guppy(port, null, ticks, token)) {
+            // Four intervals, so that a server saving less often than told would lose more than one.
+            awaitTick(ticks, 4 * tickRate);
+            killedAt = System.nanoTime();
+            first[0].destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            lastSeen = lastHeard(ticks);
+        }
+
+        Checkpoint saved = CheckpointFile.read(checkpoint);
+        long lastSavedTick = saved.tick() - 1; // the checkpoint was taken as that tick ended
+        Heard savedTickHeard;
+        synchronized (ticks) {
+            savedTickHeard = ticks.stream().filter(h -> h.tick() == lastSavedTick).findFirst().orElseThrow();
+        }
+        double lostSeconds = (killedAt - savedTickHeard.nanos()) / 1e9;
+        // One interval, plus the time to take and write a checkpoint and a tick's length, on a busy machine.
+        double slack = 1;
+        assertThat(lostSeconds).as("seconds of play lost").isLessThan(interval + slack);
+        assertThat(lastSeen - lastSavedTick).as("ticks lost")
+                .isLessThanOrEqualTo((long) ((interval + slack) * tickRate));
+
+        // The recording was written tick by tick: it holds every tick up to the one before the last
+        // the agent heard (the server hands a tick to its clients just before it writes it down).
+        List<Long> recorded = new ArrayList<>();
+        JsonMapper json = JsonMapper.builder().build();
+        for (String line : Files.readAllLines(recording, StandardCharsets.UTF_8)) {
+            JsonNode message = json.readTree(line).get("msg");
+            if (message.get("type").asString().equals("Tick")) {
+                recorded.add(message.get("tick").asLong());
+            }
+        }
+        assertThat(recorded).startsWith(java.util.stream.LongStream.range(0, lastSeen).boxed()
+                .toArray(Long[]::new));
+
+        // Resumed, the game goes on from the saved tick once Guppy is back.
+        Process[] again = new Process[1];
+        int resumed = startServer(again, "--port", "0", "--resume", checkpoint.toString(), "--quiet");
+        List<Heard> after = java.util.Collections.synchronizedList(new ArrayList<>());
+        String[] sameToken = new String[1];
+        try (ProtocolConnection agent = guppy(resumed, token[0], after, sameToken)) {
+            assertThat(sameToken[0]).isEqualTo(token[0]);
+            awaitTick(after, saved.tick() + 5);
+            assertThat(after.get(0).tick()).isEqualTo(saved.tick());
+        }
+    }
+
+    @Test
+    void aServerAskedToEndSavesTheGameAndLeavesNoHalfWrittenCheckpoint() throws Exception {
+        Path checkpoint = dir.resolve("game.json");
+        Process[] server = new Process[1];
+        int port = startServer(server, "--port", "0", "--seed", "5", "--checkpoint", checkpoint.toString(),
+                "--checkpoint-every", "1", "--quiet");
+        List<Heard> ticks = java.util.Collections.synchronizedList(new ArrayList<>());
+        long lastSeen;
+        try (ProtocolConnection agent = guppy(port, null, ticks, new String[1])) {
+            awaitTick(ticks, 30);
+            lastSeen = lastHeard(ticks);
+            // SIGTERM, as a service manager ends it; through the handle, since Process.destroy()
+            // would also close the pipe that the server's last words come through.
+            server[0].toHandle().destroy();
+            assertThat(server[0].waitFor(30, TimeUnit.SECONDS)).as("the server ended").isTrue();
+        }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10); // the last lines may still be on their way
+        while (!printed.contains("asked to end: the game is saved to " + checkpoint) && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        assertThat(printed).contains("asked to end: the game is saved to " + checkpoint);
+        try (java.util.stream.Stream<Path> files = Files.list(dir)) {
+            assertThat(files).containsExactly(checkpoint);
+        }
+        assertThat(CheckpointFile.read(checkpoint).tick()).isGreaterThan(lastSeen);
     }
 }

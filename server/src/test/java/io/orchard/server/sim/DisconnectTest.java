@@ -7,6 +7,8 @@ import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
+import io.orchard.protocol.message.ErrorCode;
+import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.FruitEatenMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
 import io.orchard.protocol.message.GraspResultMessage;
@@ -40,6 +42,8 @@ class DisconnectTest {
     private FakeSession bunny;
     private FakeSession viewer;
     private long seq = 100;
+    /** The wall clock that a dropped agent's reservation runs on, in nanoseconds. */
+    private long now;
 
     @BeforeEach
     void setUp() {
@@ -48,6 +52,7 @@ class DisconnectTest {
         sim = new Simulation(TestWorlds.small(), new SimulationConfig(20, ClockMode.LOCKSTEP, 30, 0,
                 Duration.ofSeconds(1), 8, BodyLimits.DEFAULT), 7, "test", Recorder.NONE, List.of(),
                 (name, radius) -> places.get(name));
+        sim.registrations.departed.clock = () -> now;
         guppy = new FakeSession(1, Role.AGENT);
         bunny = new FakeSession(2, Role.AGENT);
         viewer = new FakeSession(3, Role.VIEWER);
@@ -134,7 +139,7 @@ class DisconnectTest {
     }
 
     @Test
-    void aConnectionThatDropsRightAfterRegisteringLeavesAnAnnouncedAgentAndAFreeName() {
+    void aConnectionThatDropsRightAfterRegisteringLeavesAnAnnouncedAgentAndANameFreeOnceItsReservationIsOver() {
         FakeSession carrot = new FakeSession(4, Role.AGENT);
         sim.connected(carrot);
         sim.received(carrot, new RegisterMessage(++seq, "Carrot", TestWorlds.BODY, null));
@@ -144,6 +149,7 @@ class DisconnectTest {
         assertThat(viewer.last(AgentRemovedMessage.class).agent()).isEqualTo("Carrot");
         assertThat(sim.agentNames()).containsExactly("Bunny", "Guppy"); // by name
         assertThat(scoreOf("Carrot").points()).isZero();
+        now += Duration.ofSeconds(60).toNanos(); // the name's reservation for its controller is over
         FakeSession again = new FakeSession(5, Role.AGENT);
         sim.connected(again);
         sim.applyNow();
@@ -182,12 +188,13 @@ class DisconnectTest {
     }
 
     @Test
-    void withoutItsTokenADroppedAgentsNameStartsAfresh() {
+    void withoutItsTokenADroppedAgentsNameStartsAfreshOnceItsReservationIsOver() {
         String token = guppy.last(RegisteredMessage.class).resumeToken();
         tick(guppy, new MoveMessage(++seq, "Guppy", Vec3.ZERO, Vec3.ground(-5, 0)));
         ticks(12);
         sim.disconnected(guppy, "connection closed");
         ticks(1);
+        now += Duration.ofSeconds(60).toNanos();
         FakeSession other = new FakeSession(6, Role.AGENT);
         sim.connected(other);
         sim.received(other, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null, "0".repeat(32)));
@@ -195,5 +202,72 @@ class DisconnectTest {
         RegisteredMessage fresh = other.last(RegisteredMessage.class);
         assertThat(fresh.position()).isEqualTo(Vec3.ZERO);
         assertThat(fresh.resumeToken()).isNotEqualTo(token);
+    }
+
+    @Test
+    void aDroppedAgentsNameAndScoreAreKeptForItsControllerAndRefusedToOthersSayingWhenTheyFreeUp() {
+        String token = guppy.last(RegisteredMessage.class).resumeToken();
+        tick(guppy, new SetRotationMessage(++seq, "Guppy", Rotation.heading(Math.PI)),
+                new MoveMessage(++seq, "Guppy", Vec3.ZERO, Vec3.ground(0, 4)));
+        ticks(10);
+        tick(guppy, new GraspRequestMessage(++seq, "Guppy", "F1"));
+        assertThat(guppy.last(GraspResultMessage.class).success()).isTrue();
+        sim.disconnected(guppy, "connection closed");
+        ticks(1);
+        now += Duration.ofMillis(2_500).toNanos();
+
+        FakeSession squatter = new FakeSession(6, Role.AGENT);
+        sim.connected(squatter);
+        sim.received(squatter, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null));
+        sim.applyNow();
+        ErrorMessage refused = squatter.last(ErrorMessage.class);
+        assertThat(refused.code()).isEqualTo(ErrorCode.NAME_IN_USE);
+        assertThat(refused.text()).isEqualTo("agent 'Guppy' left 2 s ago and its name and score are kept for its "
+                + "controller, who gets them back by registering it with its resumeToken; the name frees up in 58 s");
+        now += Duration.ofMillis(57_000).toNanos();
+        sim.received(squatter, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null, "0".repeat(32)));
+        sim.applyNow();
+        assertThat(squatter.last(ErrorMessage.class).text()).endsWith("the name frees up in 1 s");
+        assertThat(squatter.all(RegisteredMessage.class)).isEmpty();
+
+        FakeSession back = new FakeSession(7, Role.AGENT);
+        sim.connected(back);
+        sim.received(back, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null, token));
+        sim.applyNow();
+        assertThat(back.last(RegisteredMessage.class).position().z()).isEqualTo(4, Offset.offset(1e-9));
+        assertThat(scoreOf("Guppy")).isEqualTo(new Score("Guppy", 1, 1));
+    }
+
+    @Test
+    void theControllerGetsItsAgentBackEvenAfterTheReservationAsLongAsNoOneElseTookTheName() {
+        String token = guppy.last(RegisteredMessage.class).resumeToken();
+        sim.disconnected(guppy, "connection closed");
+        ticks(1);
+        now += Duration.ofMinutes(10).toNanos();
+        FakeSession back = new FakeSession(6, Role.AGENT);
+        sim.connected(back);
+        sim.received(back, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null, token));
+        sim.applyNow();
+        assertThat(back.last(RegisteredMessage.class).resumeToken()).isEqualTo(token);
+    }
+
+    @Test
+    void aReservationOfZeroFreesADroppedAgentsNameAtOnce() {
+        sim.reserveDroppedNames(Duration.ZERO);
+        sim.disconnected(guppy, "connection closed");
+        ticks(1);
+        FakeSession other = new FakeSession(6, Role.AGENT);
+        sim.connected(other);
+        sim.received(other, new RegisterMessage(++seq, "Guppy", TestWorlds.BODY, null));
+        sim.applyNow();
+        assertThat(other.all(ErrorMessage.class)).isEmpty();
+        assertThat(other.last(RegisteredMessage.class).agent()).isEqualTo("Guppy");
+    }
+
+    @Test
+    void aNegativeReservationIsRefusedNamingIt() {
+        org.assertj.core.api.Assertions.assertThatIllegalArgumentException()
+                .isThrownBy(() -> sim.reserveDroppedNames(Duration.ofSeconds(-1)))
+                .withMessage("the reservation of a dropped agent's name must be zero or more, was PT-1S");
     }
 }
