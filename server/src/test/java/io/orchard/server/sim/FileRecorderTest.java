@@ -47,7 +47,7 @@ class FileRecorderTest {
             List<Long> ticks = TICK.matcher(text).results().map(m -> Long.parseLong(m.group(1))).toList();
             assertThat(ticks).as("after tick %d", tick).isEqualTo(LongStream.rangeClosed(0, tick).boxed().toList());
             // the tick's end is there too: what the agent asked for in it was accepted and recorded
-            assertThat(text).containsPattern("\\{\"tick\":" + tick + ",\"time\":[0-9.E-]+,\"dir\":\"in\",\"session\":1,"
+            assertThat(text).containsPattern("\\{\"tick\":" + tick + ",\"time\":[0-9.E-]+,\"dir\":\"in\",\"client\":\"Guppy\","
                     + "\"msg\":\\{\"type\":\"PerceptionRequest\"");
         }
     }
