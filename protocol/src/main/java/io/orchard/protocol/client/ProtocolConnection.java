@@ -136,13 +136,17 @@ public final class ProtocolConnection implements AutoCloseable {
                                              Set<Form> reads, Listener listener) throws IOException {
         Objects.requireNonNull(listener, "listener");
         List<String> forms = reads.isEmpty() ? null : Form.names(reads);
+        // Made before connecting: the server gives a connection a few seconds to say hello, and a
+        // codec takes a while to build in a JVM that has only just started.
+        MessageCodec codec = new MessageCodec();
+        HelloMessage hello = new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token, null, forms);
         Socket socket = new Socket();
         try {
             socket.setTcpNoDelay(true);
             open(socket, host, port);
-            ProtocolConnection connection = new ProtocolConnection(socket, new MessageCodec(), listener);
+            ProtocolConnection connection = new ProtocolConnection(socket, codec, listener);
             connection.readerThread.start();
-            connection.sendNow(new HelloMessage(0, ProtocolVersion.CURRENT, role, clientName, token, null, forms));
+            connection.sendNow(hello);
             connection.awaitWelcome();
             return connection;
         } catch (IOException | RuntimeException e) {
