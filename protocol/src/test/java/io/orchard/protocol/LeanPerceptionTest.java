@@ -132,6 +132,7 @@ class LeanPerceptionTest {
         assertThat(Form.named(null)).isEmpty();
         assertThat(Form.names(Set.of(Form.ACCEPTED_MOVES, Form.LEAN_PERCEPTION)))
                 .containsExactly("LeanPerception", "AcceptedMoves");
+        assertThat(Form.names(Set.of())).isEmpty();
     }
 
     @Test

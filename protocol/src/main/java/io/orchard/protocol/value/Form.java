@@ -1,5 +1,6 @@
 package io.orchard.protocol.value;
 
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.EnumSet;
 import java.util.List;
@@ -47,6 +48,6 @@ public enum Form {
 
     /** The names of these forms, in the order of this enum, for {@code Hello.reads}. */
     public static List<String> names(Set<Form> forms) {
-        return EnumSet.copyOf(forms).stream().map(Form::wireName).toList();
+        return Arrays.stream(values()).filter(forms::contains).map(Form::wireName).toList();
     }
 }

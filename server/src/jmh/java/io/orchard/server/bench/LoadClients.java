@@ -28,6 +28,7 @@ final class LoadClients {
         final LongAdder errors = new LongAdder();
         final LongAdder closed = new LongAdder();
         final LongAdder registered = new LongAdder();
+        final LongAdder welcomed = new LongAdder();
         /** Perception requests sent again because no perception came for a second. */
         final LongAdder retries = new LongAdder();
         /** From sending a perception request to receiving the perception it asked for. */
@@ -127,8 +128,11 @@ final class LoadClients {
                     readPosition(line);
                     act(ctx, now);
                 }
-                case "Welcome" -> send(ctx, "{\"type\":\"Register\",\"seq\":" + seq++ + ",\"name\":\"" + name
-                        + "\",\"body\":" + BODY + "}\n");
+                case "Welcome" -> {
+                    stats.welcomed.increment();
+                    send(ctx, "{\"type\":\"Register\",\"seq\":" + seq++ + ",\"name\":\"" + name
+                            + "\",\"body\":" + BODY + "}\n");
+                }
                 case "Registered" -> {
                     registered = true;
                     stats.registered.increment();

@@ -90,6 +90,14 @@ public final class LoadGenerator {
             }
             long setup = System.nanoTime();
             for (int i = 0; i < agents; i++) {
+                // No more than half the connections the server lets wait for their Hello at once.
+                while (i - stats.welcomed.sum() > 128) {
+                    if (System.nanoTime() - setup > 180e9) {
+                        throw new IllegalStateException("only " + stats.welcomed.sum() + " of " + i
+                                + " agents welcomed in 3 minutes");
+                    }
+                    Thread.sleep(1);
+                }
                 String name = "L" + i;
                 long agentSeed = seed * 31 + i;
                 channels.add(connect(group, server.port(),
