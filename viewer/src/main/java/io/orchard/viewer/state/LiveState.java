@@ -52,6 +52,8 @@ public final class LiveState extends BaseAppState implements SimClock {
     private double shown;
     private String status = "connecting";
     private boolean connectedBefore;
+    /** The last reason told among the news, so that attempts failing alike are told once. */
+    private String toldReason;
     private boolean closed;
 
     /**
@@ -126,6 +128,7 @@ public final class LiveState extends BaseAppState implements SimClock {
             shown = 0;
             mirror.note(LogLine.Kind.EVENT, "connected again to " + host + ":" + port);
         }
+        toldReason = null;
         connectedBefore = true;
     }
 
@@ -143,7 +146,10 @@ public final class LiveState extends BaseAppState implements SimClock {
             return;
         }
         status = retryIn == null ? reason : reason + "; connecting again in " + ServerLink.seconds(retryIn);
-        mirror.note(LogLine.Kind.PROBLEM, status);
+        if (!reason.equals(toldReason)) {
+            mirror.note(LogLine.Kind.PROBLEM, reason);
+            toldReason = reason;
+        }
         tickTime = Double.NaN;
         // After the game's end a server may well go away: the screenshots then show the final state.
         if (control.headless() && (!connectedBefore || mirror.gameOver().isEmpty())) {
