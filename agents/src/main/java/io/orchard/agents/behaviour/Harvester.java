@@ -76,6 +76,11 @@ public final class Harvester {
         return this;
     }
 
+    /** The navigator it walks with. */
+    public Navigator navigator() {
+        return navigator;
+    }
+
     /** The fruit being collected; null when none. */
     public String current() {
         return current;
