@@ -3,7 +3,6 @@ package io.orchard.agents.behaviour;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Nullable;
-import io.orchard.protocol.value.Point2;
 import java.util.List;
 import java.util.Locale;
 
@@ -97,14 +96,11 @@ public final class Commitment {
     }
 
     private @Nullable KnownFruit nearestByWay() {
-        Point2 here = motor.position();
         List<KnownFruit> candidates = harvester.candidates(f -> true);
         KnownFruit best = null;
         double shortest = Double.MAX_VALUE;
         for (KnownFruit candidate : candidates.subList(0, Math.min(PLANNED_CANDIDATES, candidates.size()))) {
-            Point2 spot = harvester.inReach(candidate, here) ? here : harvester.spotFor(candidate, here);
-            double way = spot == null ? Double.MAX_VALUE : navigator.planner().plan(here, spot)
-                    .map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
+            double way = harvester.wayTo(candidate);
             if (way == Double.MAX_VALUE) {
                 harvester.giveUp(candidate.id());
             } else if (way < shortest) {

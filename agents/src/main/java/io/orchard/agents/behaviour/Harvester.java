@@ -217,6 +217,20 @@ public final class Harvester {
         return Status.RUNNING;
     }
 
+    /**
+     * The length of the planned walk to a spot from which the fruit is within reach: 0 when it is
+     * within reach already, {@link Double#MAX_VALUE} when there is no such spot or no way there.
+     */
+    public double wayTo(KnownFruit fruit) {
+        Point2 here = motor.position();
+        if (inReach(fruit, here)) {
+            return 0;
+        }
+        Point2 to = spotFor(fruit, here);
+        return to == null ? Double.MAX_VALUE
+                : planner.plan(here, to).map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
+    }
+
     /** A free spot from which the fruit is within reach, preferring the one nearest to {@code from}; null if none. */
     public Point2 spotFor(KnownFruit fruit, Point2 from) {
         double reach = reach(fruit);

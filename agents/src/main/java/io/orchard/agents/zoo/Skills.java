@@ -56,14 +56,6 @@ final class Skills {
 
     /** The length of the planned way to a spot from which the fruit is in reach; MAX_VALUE when there is none. */
     double wayTo(KnownFruit fruit) {
-        var here = motor.position();
-        if (harvester.inReach(fruit, here)) {
-            return 0;
-        }
-        var spot = harvester.spotFor(fruit, here);
-        if (spot == null) {
-            return Double.MAX_VALUE;
-        }
-        return planner.plan(here, spot).map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
+        return harvester.wayTo(fruit);
     }
 }
