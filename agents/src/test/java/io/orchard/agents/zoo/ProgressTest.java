@@ -97,6 +97,8 @@ class ProgressTest {
         AgentController agent = species.create();
         Path recording = dir.resolve(species.agentName() + "-" + seed + ".ndjson");
         Games.recorded(seed, seconds, List.of(agent), recording);
-        return Progress.longest(Recording.read(recording, agent.name()));
+        Recording game = Recording.read(recording, agent.name());
+        assertThat(game.ticks()).as("the ticks of %s's game in the recording", agent.name()).isNotEmpty();
+        return Progress.longest(game);
     }
 }
