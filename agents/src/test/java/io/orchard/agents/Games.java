@@ -1,20 +1,26 @@
 package io.orchard.agents;
 
+import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.GameOverMessage;
+import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.FruitState;
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
+import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.WorldServer;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Placement;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -55,10 +61,29 @@ public final class Games {
     /** As {@link #play(long, double, List, Placement)}, with {@code listener} hearing the game on the server's thread. */
     public static Result play(long seed, double timeLimit, List<? extends AgentController> agents, Placement placement,
                               GameListener listener) throws Exception {
+        return play(seed, timeLimit, agents, placement, listener, null);
+    }
+
+    /**
+     * As {@link #play(long, double, List)}, the server recording the game to {@code recording} (as
+     * {@code --record} does) with a viewer connected before the agents join, so that the recording
+     * starts with the world's snapshot.
+     */
+    public static Result recorded(long seed, double timeLimit, List<? extends AgentController> agents, Path recording)
+            throws Exception {
+        return play(seed, timeLimit, agents, (name, radius) -> null, new GameListener() { }, recording);
+    }
+
+    private static Result play(long seed, double timeLimit, List<? extends AgentController> agents, Placement placement,
+                               GameListener listener, @Nullable Path recording) throws Exception {
         AtomicInteger eaten = new AtomicInteger();
         AtomicInteger total = new AtomicInteger();
         BlockingQueue<String> joined = new LinkedBlockingQueue<>();
-        try (WorldServer server = WorldServer.builder().port(0).seed(seed).clock(ClockMode.LOCKSTEP)
+        WorldServer.Builder builder = WorldServer.builder();
+        if (recording != null) {
+            builder.record(recording);
+        }
+        try (WorldServer server = builder.port(0).seed(seed).clock(ClockMode.LOCKSTEP)
                 .timeLimit(timeLimit).waitFor(agents.size()).placement(placement).listener(listener)
                 .listener(new GameListener() {
                     @Override
@@ -75,7 +100,8 @@ public final class Games {
                     public void agentJoined(String agent) {
                         joined.add(agent);
                     }
-                }).start()) {
+                }).start();
+             AutoCloseable viewer = recording == null ? () -> { } : watch(server)) {
             ExecutorService pool = Executors.newFixedThreadPool(agents.size());
             try {
                 long start = System.nanoTime();
@@ -98,6 +124,19 @@ public final class Games {
                 pool.shutdownNow();
             }
         }
+    }
+
+    /** A viewer on the server, connected once it has the world's snapshot. */
+    private static ProtocolConnection watch(WorldServer server) throws Exception {
+        CompletableFuture<WorldSnapshotMessage> snapshot = new CompletableFuture<>();
+        ProtocolConnection viewer = ProtocolConnection.connect("127.0.0.1", server.port(), Role.VIEWER, "games-viewer",
+                message -> {
+                    if (message instanceof WorldSnapshotMessage world) {
+                        snapshot.complete(world);
+                    }
+                });
+        snapshot.get(30, TimeUnit.SECONDS);
+        return viewer;
     }
 
     /** The fruit of the world of {@code seed}, as the server generates it. */

@@ -76,6 +76,11 @@ public final class Harvester {
         return this;
     }
 
+    /** The navigator it walks with. */
+    public Navigator navigator() {
+        return navigator;
+    }
+
     /** The fruit being collected; null when none. */
     public String current() {
         return current;
@@ -210,6 +215,20 @@ public final class Harvester {
             }
         }
         return Status.RUNNING;
+    }
+
+    /**
+     * The length of the planned walk to a spot from which the fruit is within reach: 0 when it is
+     * within reach already, {@link Double#MAX_VALUE} when there is no such spot or no way there.
+     */
+    public double wayTo(KnownFruit fruit) {
+        Point2 here = motor.position();
+        if (inReach(fruit, here)) {
+            return 0;
+        }
+        Point2 to = spotFor(fruit, here);
+        return to == null ? Double.MAX_VALUE
+                : planner.plan(here, to).map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
     }
 
     /** A free spot from which the fruit is within reach, preferring the one nearest to {@code from}; null if none. */

@@ -6,6 +6,7 @@ import io.orchard.agents.map.KnownBridge;
 import io.orchard.agents.map.KnownObstacle;
 import io.orchard.agents.map.LearnedBlock;
 import io.orchard.agents.map.RiverMap;
+import io.orchard.agents.map.Trail;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
@@ -16,8 +17,10 @@ import java.util.Arrays;
  * FREE, NEAR (close to something: walkable at a cost), TIGHT (within a hair of an obstacle:
  * walkable only near the start and the end of a path) or BLOCKED (the body would overlap a trunk,
  * a table, the water away from a bridge, the castle's likely core, or something a rejected move
- * ran into). Rebuilt from the memory when its terrain changes; the river layer, the costliest,
- * only when the river model changed.
+ * ran into). Where the agent has stood ({@link Trail}) is never blocked by the layers that are
+ * guesses (the water, the castle, what refused moves taught): it stood there, so a path can lead
+ * it out the way it came. Rebuilt from the memory when its terrain changes; the river layer, the
+ * costliest, only when the river model changed.
  */
 final class TerrainGrid {
 
@@ -84,6 +87,7 @@ final class TerrainGrid {
         for (LearnedBlock block : memory.learned()) {
             learned(block);
         }
+        memory.trail().forEach(this::trodden);
         System.arraycopy(terrain, 0, cells, 0, terrain.length);
         for (KnownObstacle obstacle : memory.obstacles()) {
             circle(obstacle.centre(), obstacle.blockRadius() + obstacle.margin());
@@ -112,6 +116,14 @@ final class TerrainGrid {
 
     double cz(int index) {
         return bounds.minZ() + (index / nx + 0.5) * CELL;
+    }
+
+    /** Ground the agent stood on: walkable at a cost, whatever the guesses say, unless beyond the world's edge. */
+    private void trodden(Point2 p) {
+        int index = indexOf(p);
+        if (terrain[index] == BLOCKED && edge[index] != BLOCKED) {
+            terrain[index] = NEAR;
+        }
     }
 
     /** Marks the cells around a blocking circle: BLOCKED where the body would overlap it, TIGHT and NEAR around. */

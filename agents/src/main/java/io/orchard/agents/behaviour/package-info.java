@@ -14,7 +14,9 @@
  *   <li>{@link io.orchard.agents.behaviour.Wanderer}: walks about at random;
  *   <li>{@link io.orchard.agents.behaviour.Steering}: purely reactive steering from the current
  *       perception alone, for agents that keep no map;
- *   <li>{@link io.orchard.agents.behaviour.Forager}: the default autonomy that puts them together.
+ *   <li>{@link io.orchard.agents.behaviour.Forager}: the default autonomy that puts them together;
+ *   <li>{@link io.orchard.agents.behaviour.Headway}: whether the agent is getting anywhere, and
+ *       {@link io.orchard.agents.behaviour.Commitment}: the plan it keeps to once it is not.
  * </ul>
  *
  * <p>Instructed goals are pursued with the same behaviours by

@@ -4,6 +4,7 @@ import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -90,6 +91,16 @@ public final class Coverage {
         if (index >= 0) {
             givenUp[index] = true;
         }
+    }
+
+    /**
+     * Forgets what was seen and given up, so that every cell is offered again: for a second look
+     * at a world that was seen whole without finding what was sought.
+     */
+    public void lookAgain() {
+        Arrays.fill(seen, false);
+        Arrays.fill(givenUp, false);
+        seenCount = 0;
     }
 
     private Point2 centre(int index) {

@@ -40,6 +40,7 @@ import java.util.Set;
  *   <li>the bridges and a model of the river band ({@link #bridges()}, {@link #river()});
  *   <li>an estimate of where the castle is, from its compass sectors ({@link #castle()});
  *   <li>which cells of the world have been looked at ({@link #coverage()});
+ *   <li>where the agent has stood, ground known to be walkable ({@link #trail()});
  *   <li>what rejected moves taught ({@link #learned()}).
  * </ul>
  *
@@ -63,6 +64,7 @@ public final class WorldMemory {
     private final RiverMap river = new RiverMap();
     private final CastleEstimate castle;
     private final Coverage coverage;
+    private final Trail trail;
     private final List<LearnedBlock> learned = new ArrayList<>();
     private List<SeenAgent> agents = List.of();
     private Sector castleSector;
@@ -90,12 +92,14 @@ public final class WorldMemory {
         this.sight = Objects.requireNonNull(sight, "sight");
         this.castle = new CastleEstimate(bounds);
         this.coverage = new Coverage(bounds);
+        this.trail = new Trail(bounds);
     }
 
     /** Where the agent stands before its first perception (from its registration). */
     public void placed(Point2 where, double towards) {
         this.position = where;
         this.heading = towards;
+        trail.stood(where);
         if (start == null) {
             start = where;
         }
@@ -120,6 +124,7 @@ public final class WorldMemory {
             start = self;
         }
         tick = perception.tick();
+        trail.stood(self);
         for (PerceivedObject object : perception.objects()) {
             remember(object, self, facing);
         }
@@ -291,6 +296,11 @@ public final class WorldMemory {
     /** What the world looked like where the agent has looked. */
     public Coverage coverage() {
         return coverage;
+    }
+
+    /** Where the agent has stood. */
+    public Trail trail() {
+        return trail;
     }
 
     /** What rejected moves taught, oldest first. */

@@ -7,7 +7,8 @@
  * walking, the fruit seen and the fruit known to be gone, the bridges, a model of the river band
  * ({@link io.orchard.agents.map.RiverMap}), an estimate of where the castle stands
  * ({@link io.orchard.agents.map.CastleEstimate}), which parts of the world have been looked at
- * ({@link io.orchard.agents.map.Coverage}) and what rejected moves taught it.
+ * ({@link io.orchard.agents.map.Coverage}), where the agent has stood
+ * ({@link io.orchard.agents.map.Trail}) and what rejected moves taught it.
  * {@link io.orchard.agents.map.Bearings} converts between relative and world positions.
  *
  * <p>Nothing here acts or talks to the server; the types are not thread-safe and belong to the

@@ -50,6 +50,7 @@ public final class Bunny extends AgentController {
     private static final double BORED_SECONDS = 4;
 
     private Steering steering;
+    private Skills skills;
     private double wanderHeading = Double.NaN;
     private double turnAt;
     private double lastMeal;
@@ -89,12 +90,20 @@ public final class Bunny extends AgentController {
     @Override
     protected void onRegistered() {
         steering = new Steering(bodyInForce().radius(), welcome().bounds());
+        skills = new Skills(memory(), motor(), planner(), random());
+        skills.harvester.gesture(fruit -> play(name() + "TSGrasp", 1.5));
     }
 
     @Override
     protected void decide(Perception perception) {
         reflexes();
+        boolean persisting = skills.persisting(instructed());
         if (pursueInstruction()) {
+            return;
+        }
+        if (persisting) {
+            crossing = null;
+            skills.commitment.step();
             return;
         }
         Point2 here = perception.ground();

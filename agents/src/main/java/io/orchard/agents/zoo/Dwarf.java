@@ -49,14 +49,15 @@ public final class Dwarf extends AgentController {
         boolean act();
     }
 
-    private final List<Layer> layers = List.of(this::reflex, this::obey, this::grab, this::forage, this::explore,
-            this::wander);
+    private final List<Layer> layers = List.of(this::reflex, this::obey, this::persist, this::grab, this::forage,
+            this::explore, this::wander);
     private Skills skills;
     private Pose pose;
     private KnownFruit target;
     private double reflexUntil = Double.NEGATIVE_INFINITY;
     private Point2 aside;
     private MoveStatus reflexHandled;
+    private boolean persisting;
 
     /** A dwarf called Dwarf. */
     public Dwarf() {
@@ -92,6 +93,7 @@ public final class Dwarf extends AgentController {
     @Override
     protected void decide(Perception perception) {
         pose.update();
+        persisting = skills.persisting(instructed());
         for (Layer layer : layers) {
             if (layer.act()) {
                 return;
@@ -126,6 +128,15 @@ public final class Dwarf extends AgentController {
             return false;
         }
         target = null; // chosen again afterwards, from what it knows then
+        return true;
+    }
+
+    private boolean persist() {
+        if (!persisting) {
+            return false;
+        }
+        target = null;
+        skills.commitment.step();
         return true;
     }
 

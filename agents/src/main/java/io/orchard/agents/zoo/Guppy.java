@@ -85,6 +85,9 @@ public final class Guppy extends AgentController {
     @Override
     protected void onGoal(Goal goal) {
         super.onGoal(goal);
+        if (stack.peek() instanceof Persist) {
+            stack.pop(); // a person's word comes first; the plan is chosen anew if Guppy gets nowhere again
+        }
         if (!(stack.peek() instanceof Obey)) {
             stack.push(new Obey());
         }
@@ -93,6 +96,12 @@ public final class Guppy extends AgentController {
     @Override
     protected void decide(Perception perception) {
         pose.update();
+        if (skills.persisting(stack.peek() instanceof Obey) && !(stack.peek() instanceof Persist)) {
+            while (stack.size() > 1) {
+                stack.pop(); // what it was doing got it nowhere: back to the standing goal, which commits
+            }
+            stack.push(new Persist());
+        }
         for (int i = 0; i < MAX_STEPS_PER_TICK; i++) {
             Task top = stack.peek();
             Status status = top.step();
@@ -190,6 +199,14 @@ public final class Guppy extends AgentController {
             }
             skills.wanderer.step(skills.navigator);
             return Status.RUNNING;
+        }
+    }
+
+    /** Got nowhere: keep to one plan until it is carried out or fails. */
+    private final class Persist implements Task {
+        @Override
+        public Status step() {
+            return skills.commitment.step();
         }
     }
 

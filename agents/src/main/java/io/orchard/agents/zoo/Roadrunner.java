@@ -109,7 +109,19 @@ public final class Roadrunner extends AgentController {
         }
     };
 
-    private final List<Behaviour> behaviours = List.of(obey, peck, explore, wander);
+    private final Behaviour persist = new Behaviour() {
+        @Override
+        public double utility() {
+            return persisting ? 1.5 : 0; // got nowhere: above anything it chose by itself, below a person's word
+        }
+
+        @Override
+        public void act() {
+            skills.commitment.step();
+        }
+    };
+
+    private final List<Behaviour> behaviours = List.of(obey, persist, peck, explore, wander);
     private Skills skills;
     private Pose pose;
     private Behaviour active;
@@ -117,6 +129,7 @@ public final class Roadrunner extends AgentController {
     private double preyScore;
     private double scoredAt = Double.NEGATIVE_INFINITY;
     private boolean explored;
+    private boolean persisting;
 
     /** A roadrunner called Roadrunner. */
     public Roadrunner() {
@@ -183,10 +196,13 @@ public final class Roadrunner extends AgentController {
     @Override
     protected void decide(Perception perception) {
         pose.update();
+        persisting = skills.persisting(instructed());
         Behaviour best = null;
         double bestScore = -1;
         for (Behaviour behaviour : behaviours) {
-            double score = behaviour.utility() + (behaviour == active ? HYSTERESIS : 0);
+            double utility = behaviour.utility();
+            // The bonus keeps a useful behaviour in control, never one that has nothing left to do.
+            double score = utility + (behaviour == active && utility > 0 ? HYSTERESIS : 0);
             if (score > bestScore) {
                 bestScore = score;
                 best = behaviour;

@@ -98,8 +98,14 @@ public final class Robot extends AgentController {
     @Override
     protected void decide(Perception perception) {
         pose.update();
+        boolean persisting = skills.persisting(instructed());
         if (pursueInstruction()) {
             plan.clear(); // the plan is stale once the instruction is done
+            return;
+        }
+        if (persisting) {
+            plan.clear(); // the plan got it nowhere: keep to one step until it is done, then plan anew
+            skills.commitment.step();
             return;
         }
         if (plan.isEmpty() || time() - plannedAt >= REPLAN_SECONDS

@@ -1,7 +1,9 @@
 package io.orchard.agents.zoo;
 
+import io.orchard.agents.behaviour.Commitment;
 import io.orchard.agents.behaviour.Explorer;
 import io.orchard.agents.behaviour.Harvester;
+import io.orchard.agents.behaviour.Headway;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.Navigator;
 import io.orchard.agents.behaviour.PathPlanner;
@@ -13,6 +15,9 @@ import java.util.random.RandomGenerator;
 /** The behaviours an agent of the zoo composes, made once it is registered and has a memory. */
 final class Skills {
 
+    /** How long an agent of the zoo goes without progress before it commits to a plan. */
+    static final double PATIENCE = 5;
+
     final WorldMemory memory;
     final Motor motor;
     final PathPlanner planner;
@@ -20,6 +25,8 @@ final class Skills {
     final Harvester harvester;
     final Explorer explorer;
     final Wanderer wanderer;
+    final Headway headway;
+    final Commitment commitment;
 
     Skills(WorldMemory memory, Motor motor, PathPlanner planner, RandomGenerator random) {
         this.memory = memory;
@@ -29,18 +36,26 @@ final class Skills {
         this.harvester = new Harvester(memory, motor, navigator);
         this.explorer = new Explorer(memory, planner);
         this.wanderer = new Wanderer(memory, random);
+        this.headway = new Headway(memory, motor, harvester::canReach, PATIENCE);
+        this.commitment = new Commitment(memory, motor, harvester, explorer);
+    }
+
+    /**
+     * Takes this tick into account and tells whether the agent must keep to a plan: it got nowhere
+     * for {@link #PATIENCE} seconds, or a plan it committed to then still has it. An instruction
+     * pursued meanwhile does not count as getting nowhere.
+     */
+    boolean persisting(boolean instructed) {
+        if (instructed) {
+            headway.reset();
+            commitment.drop();
+            return false;
+        }
+        return headway.stalled() || commitment.active();
     }
 
     /** The length of the planned way to a spot from which the fruit is in reach; MAX_VALUE when there is none. */
     double wayTo(KnownFruit fruit) {
-        var here = motor.position();
-        if (harvester.inReach(fruit, here)) {
-            return 0;
-        }
-        var spot = harvester.spotFor(fruit, here);
-        if (spot == null) {
-            return Double.MAX_VALUE;
-        }
-        return planner.plan(here, spot).map(path -> PathPlanner.length(here, path)).orElse(Double.MAX_VALUE);
+        return harvester.wayTo(fruit);
     }
 }

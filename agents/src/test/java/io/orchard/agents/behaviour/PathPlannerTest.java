@@ -7,6 +7,7 @@ import io.orchard.agents.map.Views;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
+import io.orchard.protocol.value.Sector;
 import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
 import java.util.List;
@@ -144,5 +145,29 @@ class PathPlannerTest {
         List<Point2> path = planner.plan(new Point2(0, 0), new Point2(0, -12)).orElseThrow();
         assertThat(walk(new Point2(0, 0), path)).filteredOn(p -> p.distance(new Point2(0, 0)) > 1 && p.z() > -8)
                 .allSatisfy(p -> assertThat(Math.abs(p.x())).isGreaterThan(RADIUS));
+    }
+
+    @Test
+    void aMoveTheCastleRefusedLeavesAWayOutFromWhereTheAgentStands() {
+        for (int k = 0; k < 16; k++) { // the castle's centre at (0, 0), located from places around it
+            double angle = k * Math.PI / 8;
+            see(new Point2(20 * Math.sin(angle), 20 * Math.cos(angle)));
+        }
+        assertThat(memory.castle().located()).as("spread %s", memory.castle().spread()).isTrue();
+        for (double z = 25; z >= 11; z -= 0.5) { // it walks up to the castle, seeing as it goes
+            see(new Point2(3, z));
+        }
+        Point2 here = new Point2(3, 11);
+
+        memory.moveRejected(here, new Point2(10, 8), "path enters the castle");
+
+        assertThat(planner.plan(here, new Point2(3, 25))).as("back the way it came").isPresent();
+        assertThat(planner.plan(here, new Point2(25, 0))).as("around the castle").isPresent();
+    }
+
+    /** A view from {@code at} with the castle's sector as seen from there, the castle standing at (0, 0). */
+    private void see(Point2 at) {
+        double compass = Math.toDegrees(Math.atan2(-at.x(), at.z()));
+        Views.from(at.x(), at.z(), 0).castle(Sector.values()[Math.floorMod(Math.round(compass / 45), 8)]).into(memory);
     }
 }
