@@ -8,13 +8,15 @@ import io.orchard.protocol.message.GameOverMessage;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.net.ConnectException;
+import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * {@code ./orchard first-agent [--host H] [--port N] [--name NAME]}: plays {@link FirstAgent}
- * against a running server and prints the ranking when the game is over. The launcher rebuilds
+ * {@code ./orchard first-agent [--host H] [--port N] [--name NAME] [--resume-tokens FILE]}: plays
+ * {@link FirstAgent} against a running server and prints the ranking when the game is over; like
+ * the shipped agents, it keeps its resume token in a file of its own user. The launcher rebuilds
  * the project first when a source changed, so an edit of {@code FirstAgent.java} is played at once.
  */
 @Command(name = "first-agent", abbreviateSynopsis = true, sortOptions = false,
@@ -39,6 +41,12 @@ public final class FirstAgentCommand implements Callable<Integer> {
     @Option(names = "--token", paramLabel = "SECRET", description = "The token the server requires, if any")
     private String token;
 
+    @Option(names = "--resume-tokens", paramLabel = "FILE", defaultValue = "${sys:user.home}/.orchard/resume-tokens",
+            description = "Keep the agent's resume token in FILE, readable by you alone, so that the same command run "
+                    + "again after a dropped connection or a server restarted with --resume gets the agent back with "
+                    + "its score (default: ${DEFAULT-VALUE})")
+    private Path resumeTokens;
+
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
 
@@ -61,7 +69,9 @@ public final class FirstAgentCommand implements Callable<Integer> {
         out.println(name + " is connecting to " + host + ":" + port);
         out.flush();
         try {
-            GameOverMessage over = new FirstAgent(name).run(host, port, token);
+            FirstAgent agent = new FirstAgent(name);
+            agent.keepResumeTokensIn(resumeTokens);
+            GameOverMessage over = agent.run(host, port, token);
             if (over != null) {
                 Ranking.print(over.reason(), over.ranking(), out);
             }
