@@ -59,6 +59,8 @@ public class TickBenchmark {
             sim.received(session, new RegisterMessage(++seq, "A" + i, body, null));
         }
         sim.applyNow();
+        // The game would wait for every agent's setup turn: started at once, so that ticks pass.
+        sim.start();
         for (int i = 0; i < agents; i++) {
             sim.received(session, new PerceptionRequestMessage(++seq, "A" + i, 1));
         }

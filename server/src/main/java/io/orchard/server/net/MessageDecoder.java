@@ -8,6 +8,7 @@ import io.netty.channel.ChannelHandlerContext;
 import io.netty.handler.codec.MessageToMessageDecoder;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.ProtocolException;
+import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.value.Checks;
@@ -16,7 +17,8 @@ import java.util.List;
 /**
  * Turns one framed line into a {@code ClientMessage}. A line that does not decode is answered with
  * an {@link ErrorMessage} naming the problem and dropped; the connection stays open, except for a
- * line that is too long, after which it closes. Stateless, so one instance serves every channel.
+ * line that is too long, after which it closes. The most common lines are read without the
+ * codec's mapper when they come in their plain form ({@link FastMoves}). Stateless, so one instance serves every channel.
  */
 @Sharable
 final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
@@ -39,6 +41,15 @@ final class MessageDecoder extends MessageToMessageDecoder<ByteBuf> {
     @Override
     protected void decode(ChannelHandlerContext ctx, ByteBuf frame, List<Object> out) {
         byte[] line = ByteBufUtil.getBytes(frame);
+        int length = line.length;
+        while (length > 0 && (line[length - 1] == '\n' || line[length - 1] == '\r')) {
+            length--;
+        }
+        ClientMessage plain = FastMoves.read(line, length);
+        if (plain != null) {
+            out.add(plain);
+            return;
+        }
         try {
             out.add(codec.decodeClient(line));
         } catch (ProtocolException e) {

@@ -149,6 +149,15 @@ final class Outbox {
         recorder.flush();
     }
 
+    /**
+     * Writes out the record but leaves what the clients have queued for the next {@link #flush()},
+     * which sends it first: for the end of a tick that the next tick's start follows at once, so
+     * that a client gets both in one write.
+     */
+    void flushRecord() {
+        recorder.flush();
+    }
+
     /** Records nothing more: the game is over. */
     void stopRecording() {
         release();

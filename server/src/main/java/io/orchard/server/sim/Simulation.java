@@ -65,6 +65,8 @@ public final class Simulation implements Inbox {
     final Registrations registrations;
     private final Actions actions;
     private final Perceptions perceptions;
+    /** Whether what the clients were sent at the end of the last tick waits for the next tick's start. */
+    private boolean clientsWaiting;
     private final Grasps grasps;
     private final Walking walking;
     private final CheckpointRequests checkpoints = new CheckpointRequests();
@@ -157,6 +159,7 @@ public final class Simulation implements Inbox {
     /** The first half of a tick: the clock and the perceptions asked for. */
     public void beginTick() {
         if (!game.running()) {
+            flushWaiting();
             return;
         }
         long tick = outbox.tick();
@@ -179,7 +182,16 @@ public final class Simulation implements Inbox {
                 }
             }
         }
+        clientsWaiting = false;
         outbox.flush();
+    }
+
+    /** Sends what the end of the last tick left for the next one, when none follows after all. */
+    void flushWaiting() {
+        if (clientsWaiting) {
+            clientsWaiting = false;
+            outbox.flush();
+        }
     }
 
     /** The second half of a tick: apply what clients sent, resolve grasps, walk, check the end. */
@@ -190,6 +202,16 @@ public final class Simulation implements Inbox {
     }
 
     void endTick(List<Event> events) {
+        endTick(events, false);
+    }
+
+    /**
+     * The second half of a tick; when {@code nextFollows} (the next tick begins at once, as in
+     * realtime) and the game goes on, what the clients were sent waits for the next tick's
+     * perceptions and goes out with them: one write per client per tick instead of two, for a delay
+     * of the next tick's first half. What it sends is the same, in the same order.
+     */
+    void endTick(List<Event> events, boolean nextFollows) {
         boolean ticking = game.running();
         apply(events);
         boolean scored = false;
@@ -214,7 +236,12 @@ public final class Simulation implements Inbox {
         } else {
             grasps.clear();
         }
-        outbox.flush();
+        clientsWaiting = nextFollows && game.running();
+        if (clientsWaiting) {
+            outbox.flushRecord();
+        } else {
+            outbox.flush();
+        }
         checkpoints.tickEnded(scored, game.phase(), this::checkpoint);
     }
 

@@ -67,6 +67,7 @@ public final class TickLoop implements Runnable {
             while (!stopped) {
                 step();
             }
+            sim.flushWaiting();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (RuntimeException | Error e) {
@@ -85,6 +86,7 @@ public final class TickLoop implements Runnable {
             tick();
         } else {
             wasRunning = false;
+            sim.flushWaiting();
             idle();
         }
     }
@@ -143,7 +145,7 @@ public final class TickLoop implements Runnable {
         }
         sim.drain(events);
         long ending = clock.nanoTime();
-        sim.endTick(events);
+        sim.endTick(events, !sim.lockstep());
         work += clock.nanoTime() - ending;
         times.record(work, late);
     }

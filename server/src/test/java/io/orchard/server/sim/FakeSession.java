@@ -13,6 +13,8 @@ final class FakeSession implements ClientSession {
     private final long id;
     private final Role role;
     final List<ServerMessage> received = new ArrayList<>();
+    /** How many of {@link #received} were flushed, that is sent on their way. */
+    int flushed;
     boolean open = true;
     int version = ProtocolVersion.CURRENT;
 
@@ -47,7 +49,9 @@ final class FakeSession implements ClientSession {
     }
 
     @Override
-    public void flush() {}
+    public void flush() {
+        flushed = received.size();
+    }
 
     @Override
     public void close(ErrorMessage last) {

@@ -2,9 +2,12 @@ package io.orchard.server.sim;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.PerceptionRequestMessage;
 import io.orchard.protocol.message.RegisterMessage;
+import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Vec3;
@@ -73,6 +76,43 @@ class TickLoopTest {
         assertThat(clock.millis()).isEqualTo(1000);
         assertThat(loop.stats().ticks()).isEqualTo(20);
         assertThat(loop.stats().lateTicks()).isZero();
+    }
+
+    @Test
+    void aRealtimeTicksEndGoesOutWithTheNextTicksStart() throws InterruptedException {
+        running(ClockMode.REALTIME);
+        sim.received(client, new PerceptionRequestMessage(3, "Guppy", 0));
+        loop.step();
+        // The request's result waits for the next tick's start, which follows at once.
+        ServerMessage result = client.last(ActionResultMessage.class);
+        assertThat(client.received.indexOf(result)).isGreaterThanOrEqualTo(client.flushed);
+        loop.step();
+        assertThat(client.flushed).isEqualTo(client.received.size());
+        assertThat(client.received.indexOf(result)).isLessThan(client.received.indexOf(client.last(TickMessage.class)));
+        loop.stop();
+        loop.run();
+        assertThat(client.flushed).isEqualTo(client.received.size());
+    }
+
+    @Test
+    void aLockstepTicksEndGoesOutAtOnce() throws InterruptedException {
+        running(ClockMode.LOCKSTEP);
+        sim.received(client, new PerceptionRequestMessage(3, "Guppy", 0));
+        sim.received(client, new EndTurnMessage(4, 0));
+        loop.step();
+        assertThat(client.all(ActionResultMessage.class)).isNotEmpty();
+        assertThat(client.flushed).isEqualTo(client.received.size());
+    }
+
+    @Test
+    void whatARealtimeTicksEndLeftGoesOutWhenTheGamePauses() throws InterruptedException {
+        running(ClockMode.REALTIME);
+        sim.received(client, new PerceptionRequestMessage(3, "Guppy", 0));
+        loop.step();
+        sim.togglePause();
+        loop.step();
+        assertThat(sim.phase()).isEqualTo(Phase.PAUSED);
+        assertThat(client.flushed).isEqualTo(client.received.size());
     }
 
     @Test
