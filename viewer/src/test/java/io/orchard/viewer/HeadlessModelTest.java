@@ -22,7 +22,8 @@ import org.junit.jupiter.api.io.TempDir;
  * at the origin, facing north (so the model's +x is the world's -x), its named skinned clip
  * {@code Wave.Arm} and its unnamed clip {@code clip#1} started by the agent at 0.5 s; screenshots
  * of the recording before and 0.5 s after: the skinned upper body has bent over to the side and
- * the flag has risen, and nothing of them is left where they were.
+ * the flag has risen, and nothing of them is left where they were. The viewer runs without
+ * {@code XDG_RUNTIME_DIR}, as on a bare machine, and says nothing of it.
  */
 class HeadlessModelTest {
 
@@ -52,7 +53,7 @@ class HeadlessModelTest {
         GameFixture.at(script, 10, seq -> new StartAnimationMessage(seq, "Figure", "clip#1", true));
         Path recording = GameFixture.posing(dir, "Figure", ModelSpec.of(ModelFormat.GLTF, SkinnedFigure.embedded()),
                 List.of(SkinnedFigure.WAVE, "clip#1"), script, 2);
-        shots = ViewerProcess.run(dir, "--replay", recording.toString(), "--headless", "--size", "640x360",
+        shots = ViewerProcess.run(dir, false, "--replay", recording.toString(), "--headless", "--size", "640x360",
                 "--hud", "off", "--camera", "0,1.2,5", "--look-at", "0,1,0",
                 "--screenshot", "before.png", "--at", "0.4", "--screenshot", "during.png", "--at", "1.0");
         assertThat(shots.exit()).as("exit status; output:%n%s", shots.output()).isZero();
@@ -63,6 +64,11 @@ class HeadlessModelTest {
     @Test
     void theModelLoadsWithoutAProblem() {
         assertThat(shots.output()).doesNotContain("placeholder", "cannot be shown");
+    }
+
+    @Test
+    void aRunWithoutARuntimeFolderPrintsNoNoiseOfTheLibraries() {
+        assertThat(shots.output()).doesNotContain("XDG_RUNTIME_DIR", "OGGLoader", "Cannot find loader");
     }
 
     @Test
