@@ -19,7 +19,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A glTF figure authored for the tests ({@link SkinnedFigure}) registered through a live server
- * at the origin, facing north (so the model's +x is the world's -x), its named skinned clip
+ * at the origin, facing north (so the model's +x is the world's -x), fitted to its body, its named skinned clip
  * {@code Wave.Arm} and its unnamed clip {@code clip#1} started by the agent at 0.5 s; screenshots
  * of the recording before and 0.5 s after: the skinned upper body has bent over to the side and
  * the flag has risen, and nothing of them is left where they were. The viewer runs without
@@ -34,10 +34,11 @@ class HeadlessModelTest {
     /** The flag: green and blue well above red. */
     static final Frame.ColorTest CYAN = (r, g, b) -> b > r + 60 && g > r + 60;
 
-    static final Vec3 CHEST = new Vec3(0, 1.4, 0);
-    static final Vec3 BENT_CHEST = new Vec3(0.6, 0.8, 0);
-    static final Vec3 FLAG_LOW = new Vec3(-0.6, 1.2, 0);
-    static final Vec3 FLAG_HIGH = new Vec3(-0.6, 2.0, 0);
+    // Fitted to the body, 1.6 m as authored: centred on the 1 m from its left side to its flag.
+    static final Vec3 CHEST = new Vec3(0.25, 1.4, 0);
+    static final Vec3 BENT_CHEST = new Vec3(0.75, 0.8, 0);
+    static final Vec3 FLAG_LOW = new Vec3(-0.35, 1.2, 0);
+    static final Vec3 FLAG_HIGH = new Vec3(-0.35, 2.0, 0);
 
     @TempDir
     static Path dir;

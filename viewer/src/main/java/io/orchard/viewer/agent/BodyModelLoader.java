@@ -18,7 +18,8 @@ import java.util.Objects;
  * Turns an agent's {@link ModelSpec} into a {@link BodyModel}, never failing: a model that
  * cannot be loaded (malformed, too large, unsafe, an unknown bundled name) becomes the model
  * package's placeholder, and the result says why. An agent that sent no model also gets the
- * placeholder, without a problem.
+ * placeholder, without a problem. A glTF model is fitted to the body's height and stood on the
+ * ground ({@link BodyModel#fitToHeight}).
  *
  * <p>Loading touches no live scene and may run on any thread.
  */
@@ -61,6 +62,7 @@ public final class BodyModelLoader {
             BodyModel model = BodyModels.load(name, format, bytes, assets, limits);
             if (format == ModelFormat.GLTF || format == ModelFormat.GLB) {
                 withoutPbr(model);
+                model.fitToHeight(height);
             }
             return new Loaded(model, null);
         } catch (ModelException e) {

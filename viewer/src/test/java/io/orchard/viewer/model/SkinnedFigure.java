@@ -32,10 +32,20 @@ public final class SkinnedFigure {
 
     /** The figure as one .gltf file with its buffer embedded as a data: URI. */
     public static byte[] embedded() {
+        return embedded("");
+    }
+
+    /**
+     * The figure as one .gltf file, its node {@code Figure} given {@code transform}: JSON members
+     * such as {@code "scale": [100, 100, 100], } for a figure authored in centimetres.
+     */
+    public static byte[] embedded(String transform) {
         SkinnedFigure figure = new SkinnedFigure();
         byte[] buffer = figure.buffer();
         String uri = "data:application/octet-stream;base64," + Base64.getEncoder().encodeToString(buffer);
-        return figure.json("\"uri\": \"" + uri + "\", ", buffer.length).getBytes(StandardCharsets.UTF_8);
+        return figure.json("\"uri\": \"" + uri + "\", ", buffer.length)
+                .replace("{\"name\": \"Figure\", ", "{\"name\": \"Figure\", " + transform)
+                .getBytes(StandardCharsets.UTF_8);
     }
 
     /** The figure as binary glTF: the buffer in the BIN chunk. */
