@@ -60,6 +60,11 @@ public final class BodyModelLoader {
                 }
             }
             BodyModel model = BodyModels.load(name, format, bytes, assets, limits);
+            if (!hasGeometry(model)) {
+                return failed(name, "the " + format.wireName() + " model has nothing to draw: no shape"
+                        + " this viewer draws (PROTO instances are not expanded; Text, Inline and"
+                        + " nodes of a world are not drawn; the log names each node skipped)");
+            }
             if (format == ModelFormat.GLTF || format == ModelFormat.GLB) {
                 withoutPbr(model);
                 model.fitToHeight(height);
@@ -70,6 +75,12 @@ public final class BodyModelLoader {
         } catch (RuntimeException e) {
             return failed(name, "the model could not be loaded: " + e);
         }
+    }
+
+    private static boolean hasGeometry(BodyModel model) {
+        boolean[] found = new boolean[1];
+        model.root().depthFirstTraversal(spatial -> found[0] |= spatial instanceof Geometry);
+        return found[0];
     }
 
     private Loaded failed(String name, String problem) {
