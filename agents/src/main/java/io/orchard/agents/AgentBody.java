@@ -202,7 +202,7 @@ public final class AgentBody {
         /** Joints of the model to register (Transform nodes the agent will turn). */
         public Builder joints(String... names) {
             for (String name : names) {
-                joints.add(Checks.name(name, "joint"));
+                joints.add(Checks.partName(name, "joint"));
             }
             return this;
         }
@@ -210,21 +210,21 @@ public final class AgentBody {
         /** Time sensors of the model to register (animations the agent will start). */
         public Builder timeSensors(String... names) {
             for (String name : names) {
-                timeSensors.add(Checks.name(name, "time sensor"));
+                timeSensors.add(Checks.partName(name, "time sensor"));
             }
             return this;
         }
 
         /** The time sensor that animates walking: started while the agent walks, stopped when it stands. */
         public Builder walkAnimation(String timeSensor) {
-            this.walkAnimation = Checks.name(timeSensor, "walk animation");
+            this.walkAnimation = Checks.partName(timeSensor, "walk animation");
             timeSensors.add(timeSensor);
             return this;
         }
 
         /** The time sensor that animates grasping: started with each grasp. */
         public Builder graspAnimation(String timeSensor) {
-            this.graspAnimation = Checks.name(timeSensor, "grasp animation");
+            this.graspAnimation = Checks.partName(timeSensor, "grasp animation");
             timeSensors.add(timeSensor);
             return this;
         }

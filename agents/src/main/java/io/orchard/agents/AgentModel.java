@@ -1,5 +1,6 @@
 package io.orchard.agents;
 
+import io.orchard.protocol.StrictJson;
 import io.orchard.protocol.value.Checks;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
@@ -18,6 +19,9 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import tools.jackson.core.JacksonException;
+import tools.jackson.databind.JsonNode;
+import tools.jackson.databind.json.JsonMapper;
 
 /**
  * An agent's visual model as it travels with the agent: the bytes of an X3D, VRML97 or glTF file,
@@ -27,7 +31,12 @@ import java.util.regex.Pattern;
  * <p>Before registering, the controller checks that the model has what the paper requires
  * ({@link #check}): a Transform named after the agent, and a node for each joint and time sensor
  * the agent registers. The check is a light one: it reads the nodes' DEF names (X3D, VRML97) or
- * the names in a glTF file, without loading the model.
+ * the names in a glTF file (an unnamed node or clip as {@code node#i} or {@code clip#i}, by its index, as viewers
+ * name it), without loading the model.
+ *
+ * <p>A .gltf whose buffers and textures are files next to it, as modelling tools export it, is sent as one file: each
+ * such file is read from the model's own folder among the resources (never from elsewhere, never from the network)
+ * and embedded as a {@code data:} URI.
  *
  * <pre>{@code
  * AgentModel model = AgentModel.load(Dwarf.class, "models/Dwarf.x3d");
@@ -43,6 +52,7 @@ public final class AgentModel {
     private static final Pattern GLTF_NAME = Pattern.compile("\"name\"\\s*:\\s*\"((?:[^\"\\\\]|\\\\.)*)\"");
     private static final List<String> JOINT_TYPES = List.of("Transform", "HAnimJoint", "HAnimSegment", "HAnimHumanoid");
     private static final String GLTF_TYPE = "named";
+    private static final JsonMapper INDEX_READER = StrictJson.builder().build();
 
     private final ModelFormat format;
     private final byte[] bytes;
@@ -74,6 +84,9 @@ public final class AgentModel {
             if (data.length > ModelSpec.MAX_MODEL_BYTES) {
                 throw new IOException("model '" + resource + "' has " + data.length + " bytes, at most "
                         + ModelSpec.MAX_MODEL_BYTES + " may be sent");
+            }
+            if (format == ModelFormat.GLTF) {
+                data = GltfPacking.packed(owner, resource, data);
             }
             return new AgentModel(format, data, resource.substring(resource.lastIndexOf('/') + 1));
         }
@@ -248,10 +261,30 @@ public final class AgentModel {
                 while (m.find()) {
                     found.putIfAbsent(m.group(1), GLTF_TYPE);
                 }
+                indexNames(json, found);
             }
             default -> throw new IllegalArgumentException("cannot scan a " + format.wireName() + " model");
         }
         return found;
+    }
+
+    /** The names viewers give unnamed glTF nodes and clips: {@code node#i}, {@code clip#i} by their index. */
+    private static void indexNames(String json, Map<String, String> found) {
+        JsonNode root;
+        try {
+            root = INDEX_READER.readTree(json);
+        } catch (JacksonException e) {
+            return; // the light check reads what it can; the viewer names what is wrong
+        }
+        for (String[] kind : new String[][] {{"nodes", "node#"}, {"animations", "clip#"}}) {
+            JsonNode entries = root == null ? null : root.get(kind[0]);
+            for (int i = 0; entries != null && entries.isArray() && i < entries.size(); i++) {
+                JsonNode name = entries.get(i).get("name");
+                if (name == null || !name.isString() || name.stringValue().isEmpty()) {
+                    found.putIfAbsent(kind[1] + i, GLTF_TYPE);
+                }
+            }
+        }
     }
 
     /** VRML text without its comments ('#' to the end of the line) and with its strings blanked out. */

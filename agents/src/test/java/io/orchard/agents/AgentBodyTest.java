@@ -32,7 +32,7 @@ class AgentBodyTest {
         assertThatThrownBy(() -> AgentBody.builder().gripper("hands", 0.6, 1.5, 1.0))
                 .hasMessage("gripper maxHeight must not be below minHeight (1.5), was 1.0");
         assertThatThrownBy(() -> AgentBody.builder().sight(40, 7)).hasMessageContaining("at most 2*pi radians, was 7.0");
-        assertThatThrownBy(() -> AgentBody.builder().joints("Left Knee")).hasMessageContaining("joint must be a letter");
+        assertThatThrownBy(() -> AgentBody.builder().joints("Left Knee ")).hasMessageContaining("joint must be 1 to 64 characters");
         assertThatThrownBy(() -> AgentBody.builder().model("pippin.obj")).hasMessageContaining("unknown extension");
         assertThatThrownBy(() -> AgentBody.builder().perceptionEvery(0))
                 .hasMessage("perceptionEvery must be at least 1 tick, was 0");

@@ -106,4 +106,41 @@ class AgentModelTest {
 
         assertThat(model.problems("Pippin", List.of(), List.of())).isEmpty();
     }
+
+    @Test
+    void aGltfWithItsBufferAndTextureInFilesNextToItIsSentAsOneFile() throws IOException {
+        AgentModel model = AgentModel.load(AgentModelTest.class, "split/Split.gltf");
+
+        String sent = new String(model.spec().bytes(), StandardCharsets.UTF_8);
+        assertThat(sent).doesNotContain("Split.bin", "Split%20skin.png")
+                .contains("\"uri\":\"data:application/octet-stream;base64,", "\"uri\":\"data:image/png;base64,");
+        byte[] bin = java.util.Base64.getDecoder().decode(sent.replaceFirst(
+                "(?s).*?\"uri\":\"data:application/octet-stream;base64,([^\"]*)\".*", "$1"));
+        assertThat(bin).hasSize(68);
+        assertThat(model.problems("Split", List.of("node#1"), List.of("clip#0"))).isEmpty();
+    }
+
+    @Test
+    void aFileOutsideTheModelsFolderIsRefusedByItsUri() {
+        assertThatThrownBy(() -> AgentModel.load(AgentModelTest.class, "split/Escape.gltf"))
+                .isInstanceOf(IOException.class)
+                .hasMessageContaining("buffers[1].uri '../Pippin.gltf' leaves the model's folder");
+    }
+
+    @Test
+    void aUrlIsNeverFetched() {
+        assertThatThrownBy(() -> AgentModel.load(AgentModelTest.class, "split/Remote.gltf"))
+                .isInstanceOf(IOException.class)
+                .hasMessageContaining("buffers[0].uri 'https://example.com/Split.bin' is not a path relative to the model");
+    }
+
+    @Test
+    void unnamedGltfNodesAndClipsAreKnownByTheirIndexNames() throws IOException {
+        AgentModel model = AgentModel.load(AgentModelTest.class, "split/Split.gltf");
+
+        assertThat(model.nodes()).containsKeys("Split", "node#1", "clip#0").doesNotContainKey("node#0");
+        assertThat(model.problems("Split", List.of("node#2"), List.of("clip#1")))
+                .containsExactly("no joint node#2: the model has no node DEF 'node#2'",
+                        "no time sensor clip#1: the model has no animation named 'clip#1'");
+    }
 }

@@ -123,6 +123,10 @@ public final class ViewerMain {
         settings.setResolution(options.width(), options.height());
         settings.setWindowSize(options.width(), options.height());
         settings.setAudioRenderer(null);
+        settings.putString("AssetConfigURL", "io/orchard/viewer/assets.cfg");
+        // Without a Wayland session GLFW would try Wayland first all the same, and libwayland then
+        // complains on standard error that XDG_RUNTIME_DIR is invalid (as under xvfb-run).
+        settings.setX11PlatformPreferred(System.getenv("WAYLAND_DISPLAY") == null);
         settings.setUseJoysticks(false);
         settings.setGammaCorrection(true);
         settings.setSamples(0);

@@ -165,6 +165,39 @@ public final class GameFixture {
     }
 
     /**
+     * Plays a short game in the garden with one agent, {@code name}, standing at the origin with
+     * {@code model}, its time sensors registered, sending {@code script}'s messages at their ticks
+     * (20 a second), and records it.
+     *
+     * @return the recording, {@code <name>.ndjson} in {@code dir}
+     */
+    public static Path posing(Path dir, String name, ModelSpec model, List<String> timeSensors,
+                              Map<Long, List<LongFunction<ClientMessage>>> script, double seconds) throws Exception {
+        Path scenario = dir.resolve("garden.json");
+        Files.writeString(scenario, GARDEN, StandardCharsets.UTF_8);
+        Path recording = dir.resolve(name + ".ndjson");
+        BlockingQueue<ServerMessage> shown = new LinkedBlockingQueue<>();
+        try (WorldServer server = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP).tickRate(20)
+                .timeLimit(seconds).waitFor(1).scenario(scenario).record(recording)
+                .placement((agent, radius) -> new Vec3(0, 0, 0)).start();
+             ProtocolConnection viewer = ProtocolConnection.connect("127.0.0.1", server.port(), Role.VIEWER,
+                     "fixture-viewer", shown::add)) {
+            awaitSnapshot(viewer, shown);
+            BlockingQueue<ServerMessage> inbox = new LinkedBlockingQueue<>();
+            try (ProtocolConnection agent = ProtocolConnection.connect("127.0.0.1", server.port(), Role.AGENT,
+                    "fixture-poser", inbox::add)) {
+                request(agent, seq -> new RegisterMessage(seq, name, WALKER_BODY, model));
+                for (String sensor : timeSensors) {
+                    request(agent, seq -> new RegisterTimeSensorMessage(seq, name, sensor));
+                }
+                agent.send(seq -> new EndTurnMessage(seq, 0));
+                play(agent, inbox, tick -> script.getOrDefault(tick, List.of()));
+            }
+        }
+        return recording;
+    }
+
+    /**
      * Plays a game of {@code agents} figures wandering the generated world of seed 1998 for
      * {@code seconds} simulated seconds, and records it.
      */
@@ -279,7 +312,7 @@ public final class GameFixture {
         return reply;
     }
 
-    private static void at(Map<Long, List<LongFunction<ClientMessage>>> script, long tick,
+    static void at(Map<Long, List<LongFunction<ClientMessage>>> script, long tick,
                            LongFunction<ClientMessage> message) {
         script.computeIfAbsent(tick, t -> new ArrayList<>()).add(message);
     }

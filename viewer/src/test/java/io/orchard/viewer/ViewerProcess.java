@@ -49,6 +49,11 @@ final class ViewerProcess {
 
     /** Runs {@code ViewerMain} with these arguments in {@code dir} and waits for it, at most 90 s. */
     static Result run(Path dir, String... args) throws IOException, InterruptedException {
+        return run(dir, true, args);
+    }
+
+    /** {@link #run(Path, String...)}, with {@code XDG_RUNTIME_DIR} set to a folder of its own or not at all. */
+    static Result run(Path dir, boolean runtimeDir, String... args) throws IOException, InterruptedException {
         // xvfb-run answers with its own status when it fails to clean up after the viewer (5, on a busy
         // machine now and then): the viewer's own status is kept in a file and read from there.
         Path status = Files.createTempFile(dir, "viewer-exit", ".txt");
@@ -59,9 +64,12 @@ final class ViewerProcess {
         command.addAll(List.of(args));
         ProcessBuilder builder = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true);
         builder.environment().remove("DISPLAY");
-        Path runtime = Files.createDirectories(dir.resolve("xdg-runtime"));
-        runtime.toFile().setExecutable(true, true);
-        builder.environment().put("XDG_RUNTIME_DIR", runtime.toString());
+        builder.environment().remove("XDG_RUNTIME_DIR");
+        if (runtimeDir) {
+            Path runtime = Files.createDirectories(dir.resolve("xdg-runtime"));
+            runtime.toFile().setExecutable(true, true);
+            builder.environment().put("XDG_RUNTIME_DIR", runtime.toString());
+        }
         Process process = builder.start();
         ByteArrayOutputStream output = new ByteArrayOutputStream();
         Thread reader = new Thread(() -> copy(process.getInputStream(), output), "viewer-output");

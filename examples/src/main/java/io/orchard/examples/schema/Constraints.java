@@ -33,6 +33,7 @@ import tools.jackson.databind.node.ObjectNode;
 final class Constraints {
 
     private static final String NAME_PATTERN = "^" + Checks.NAME.pattern() + "$";
+    private static final String PART_NAME_PATTERN = "^" + Checks.PART_NAME.pattern() + "$";
     /** 1 to 64 characters, none a control character, not all white space (as Java's isWhitespace has it). */
     private static final String ID_PATTERN = "^[^\\u0000-\\u001f\\u007f-\\u009f]*"
             + "[^\\u0000-\\u0020\\u007f-\\u009f\\u1680\\u2000-\\u2006\\u2008-\\u200a\\u2028\\u2029\\u205f\\u3000]"
@@ -43,7 +44,8 @@ final class Constraints {
     /** The bearing's range (-pi, pi] with the reader's slack of 1e-9 for rounding. */
     private static final double BEARING_SLACK = 1e-9;
 
-    private static final Set<String> NAMES = Set.of("agent", "name", "joint", "timeSensor", "part", "bundled");
+    private static final Set<String> NAMES = Set.of("agent", "name", "part", "bundled");
+    private static final Set<String> PART_NAMES = Set.of("joint", "timeSensor");
     private static final Set<String> IDS = Set.of("id", "fruit", "support");
     private static final Set<String> TEXTS = Set.of("text", "reason", "client", "token", "operatorToken",
             "resumeToken", "serverVersion", "action", "from");
@@ -149,6 +151,8 @@ final class Constraints {
             property.put("maxLength", (ModelSpec.MAX_MODEL_BYTES + 2) / 3 * 4).put("pattern", BASE64_PATTERN)
                     .put("description", "The model file in Base64, at most " + ModelSpec.MAX_MODEL_BYTES
                             + " bytes once decoded.");
+        } else if (PART_NAMES.contains(name)) {
+            property.put("pattern", PART_NAME_PATTERN);
         } else if (NAMES.contains(name)) {
             property.put("pattern", NAME_PATTERN);
             if (record == ModelSpec.class) {

@@ -19,6 +19,6 @@ public record AnimationStartedMessage(long tick,
     public AnimationStartedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");
-        Checks.name(timeSensor, "timeSensor");
+        Checks.partName(timeSensor, "timeSensor");
     }
 }

@@ -17,6 +17,6 @@ public record AnimationStoppedMessage(long tick,
     public AnimationStoppedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");
-        Checks.name(timeSensor, "timeSensor");
+        Checks.partName(timeSensor, "timeSensor");
     }
 }

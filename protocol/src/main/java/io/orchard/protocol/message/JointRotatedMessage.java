@@ -20,7 +20,7 @@ public record JointRotatedMessage(long tick,
     public JointRotatedMessage {
         Checks.nonNegative(tick, "tick");
         Checks.name(agent, "agent");
-        Checks.name(joint, "joint");
+        Checks.partName(joint, "joint");
         Checks.present(rotation, "rotation");
     }
 }

@@ -18,6 +18,6 @@ public record RegisterJointMessage(long seq,
     public RegisterJointMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");
-        Checks.name(joint, "joint");
+        Checks.partName(joint, "joint");
     }
 }

@@ -18,6 +18,6 @@ public record RegisterTimeSensorMessage(long seq,
     public RegisterTimeSensorMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");
-        Checks.name(timeSensor, "timeSensor");
+        Checks.partName(timeSensor, "timeSensor");
     }
 }

@@ -20,7 +20,7 @@ public record SetJointRotationMessage(long seq,
     public SetJointRotationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");
-        Checks.name(joint, "joint");
+        Checks.partName(joint, "joint");
         Checks.present(rotation, "rotation");
     }
 }

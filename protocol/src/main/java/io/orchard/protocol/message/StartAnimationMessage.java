@@ -19,6 +19,6 @@ public record StartAnimationMessage(long seq,
     public StartAnimationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");
-        Checks.name(timeSensor, "timeSensor");
+        Checks.partName(timeSensor, "timeSensor");
     }
 }

@@ -17,6 +17,6 @@ public record StopAnimationMessage(long seq,
     public StopAnimationMessage {
         Checks.nonNegative(seq, "seq");
         Checks.name(agent, "agent");
-        Checks.name(timeSensor, "timeSensor");
+        Checks.partName(timeSensor, "timeSensor");
     }
 }

@@ -15,6 +15,13 @@ public final class Checks {
     /** Agent, joint and time-sensor names: a letter, then letters, digits, '_' or '-'; at most 32. */
     public static final Pattern NAME = Pattern.compile("[A-Za-z][A-Za-z0-9_-]{0,31}");
 
+    /**
+     * Joint and time-sensor names, as the tools that make models write them: 1 to 64 characters, the first a
+     * letter, a digit or '_', then letters, digits, spaces and '_', '-', '.', ':', '|' or '#', not ending in a space
+     * (such as {@code Shoulder.L_CatArmature}, {@code mixamorig:Hips}, {@code Armature|Walk} or {@code clip#0}).
+     */
+    public static final Pattern PART_NAME = Pattern.compile("[A-Za-z0-9_](?:[A-Za-z0-9_ .:|#-]{0,62}[A-Za-z0-9_.:|#-])?");
+
     /** The longest free text (an instruction, something an agent says, a reason) in characters. */
     public static final int MAX_TEXT = 1000;
 
@@ -68,6 +75,17 @@ public final class Checks {
         if (!isName(value)) {
             throw new IllegalArgumentException(field + " must be a letter followed by up to 31 letters, digits,"
                     + " '_' or '-', was " + quote(value));
+        }
+        return value;
+    }
+
+    /** {@code value} if it is present and matches {@link #PART_NAME}: the name of a joint or time sensor in a model. */
+    public static String partName(String value, String field) {
+        present(value, field);
+        if (!PART_NAME.matcher(value).matches()) {
+            throw new IllegalArgumentException(field + " must be 1 to 64 characters, a letter, digit or '_' followed by"
+                    + " letters, digits, spaces, '_', '-', '.', ':', '|' or '#', not ending in a space, was "
+                    + quote(value));
         }
         return value;
     }

@@ -18,7 +18,8 @@ import java.util.Objects;
  * Turns an agent's {@link ModelSpec} into a {@link BodyModel}, never failing: a model that
  * cannot be loaded (malformed, too large, unsafe, an unknown bundled name) becomes the model
  * package's placeholder, and the result says why. An agent that sent no model also gets the
- * placeholder, without a problem.
+ * placeholder, without a problem. A glTF model is fitted to the body's height and stood on the
+ * ground ({@link BodyModel#fitToHeight}).
  *
  * <p>Loading touches no live scene and may run on any thread.
  */
@@ -59,8 +60,14 @@ public final class BodyModelLoader {
                 }
             }
             BodyModel model = BodyModels.load(name, format, bytes, assets, limits);
+            if (!hasGeometry(model)) {
+                return failed(name, "the " + format.wireName() + " model has nothing to draw: no shape"
+                        + " this viewer draws (PROTO instances are not expanded; Text, Inline and"
+                        + " nodes of a world are not drawn; the log names each node skipped)");
+            }
             if (format == ModelFormat.GLTF || format == ModelFormat.GLB) {
                 withoutPbr(model);
+                model.fitToHeight(height);
             }
             return new Loaded(model, null);
         } catch (ModelException e) {
@@ -68,6 +75,12 @@ public final class BodyModelLoader {
         } catch (RuntimeException e) {
             return failed(name, "the model could not be loaded: " + e);
         }
+    }
+
+    private static boolean hasGeometry(BodyModel model) {
+        boolean[] found = new boolean[1];
+        model.root().depthFirstTraversal(spatial -> found[0] |= spatial instanceof Geometry);
+        return found[0];
     }
 
     private Loaded failed(String name, String problem) {

@@ -136,6 +136,20 @@ public final class BodyModel {
         rig.stopAnimation(name);
     }
 
+    /**
+     * Scales the model to {@code height} metres and stands it on y = 0 centred on its origin, as
+     * authored bounds have it ({@link Fitting}); call it once, before the model is shown. Moves and
+     * turns are unaffected: they go to the node above the fitted one.
+     *
+     * @throws ModelException if the height is not a positive finite number
+     */
+    public void fitToHeight(double height) throws ModelException {
+        if (!(height > 0) || !Double.isFinite(height)) {
+            throw bad("fitToHeight height must be a positive number of metres but is " + height);
+        }
+        Fitting.fit(root, agentName, (float) height);
+    }
+
     /** Whether the model has a node of that name: a DEF name, or a glTF node or joint name. */
     public boolean hasNode(String name) {
         return rig.hasNode(name);

@@ -132,8 +132,13 @@ public final class SceneBuilder {
     private Spatial spatial(SceneNode node) throws ModelException {
         String type = node.typeName();
         if (!node.isKnown()) {
-            if (ENVIRONMENT.contains(type) || type.startsWith("Metadata")) {
+            if (type.startsWith("Metadata")) {
                 LOG.debug("{}: {} is not part of an agent's body; skipped", node.location(), type);
+            } else if (ENVIRONMENT.contains(type)) {
+                if (warned.add(type)) {
+                    LOG.info("{}: {} belongs to a world, not to an agent's body; it is not shown",
+                            node.location(), type);
+                }
             } else if (warned.add(type)) {
                 LOG.warn("{}: node type {} is not supported; it and its children are not shown",
                         node.location(), type);

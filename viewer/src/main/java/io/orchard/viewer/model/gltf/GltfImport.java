@@ -20,7 +20,7 @@ import java.io.InputStream;
  * Loads glTF and GLB from bytes in memory with jME's own loaders, after {@link GltfGuard} has
  * refused anything that would make them read files or exhaust the stack or memory. The loader
  * gets an {@link AssetInfo} over the byte array; its asset manager is used only for material
- * definitions.
+ * definitions. Unnamed nodes and clips are named by their indices first ({@link GltfNames}).
  */
 public final class GltfImport {
 
@@ -36,12 +36,13 @@ public final class GltfImport {
                                AssetManager assets, ModelLimits limits) throws ModelException {
         ParseBudget.checkSize(bytes, limits, format.name());
         GltfGuard.check(format, bytes, limits);
+        byte[] named = GltfNames.named(format, bytes, limits);
         String extension = format == ModelFormat.GLB ? ".glb" : ".gltf";
         GltfModelKey key = new GltfModelKey(agentName + extension);
         AssetInfo info = new AssetInfo(assets, key) {
             @Override
             public InputStream openStream() {
-                return new ByteArrayInputStream(bytes);
+                return new ByteArrayInputStream(named);
             }
         };
         AssetLoader loader = format == ModelFormat.GLB ? new GlbLoader() : new GltfLoader();

@@ -271,10 +271,10 @@ public final class X3dParser {
         }
         if (def == null || !def.type().isNode() || !def.access().canInitialize()) {
             if (!child.isKnown()) {
-                if (warned.add(node.typeName() + "/" + child.typeName())) {
-                    LOG.warn("{}: {} inside {} is ignored (no field '{}')",
-                            childFrame.location(), child.typeName(), node.label(), field);
-                }
+                // Each such node on its own: the count of what is not drawn matters to its author.
+                LOG.warn("{}: {} inside {} is not drawn: {} is a node type this viewer does not"
+                        + " support", childFrame.location(), child.typeName(), node.label(),
+                        child.typeName());
                 return;
             }
             throw new ModelException(Kind.MALFORMED, childFrame.location() + ": " + node.label()
