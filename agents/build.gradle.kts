@@ -16,6 +16,8 @@ dependencies {
     implementation(libs.slf4j.api)
     // AgentMain hands its picocli CommandLines to launchers.
     api(libs.picocli)
+    // Checks a language model's goal against the goals' JSON Schema (LanguageModelInterpreter).
+    implementation(libs.json.schema.validator)
 
     // Agents are tested against a real server, which they never depend on otherwise.
     testImplementation(project(":server"))
