@@ -16,12 +16,22 @@ dependencies {
     implementation(libs.slf4j.api)
     // AgentMain hands its picocli CommandLines to launchers.
     api(libs.picocli)
+    // Checks a language model's goal against the goals' JSON Schema (LanguageModelInterpreter).
+    implementation(libs.json.schema.validator)
 
     // Agents are tested against a real server, which they never depend on otherwise.
     testImplementation(project(":server"))
     testImplementation(libs.logback.classic)
+    testImplementation(libs.jmh.core)
+    testAnnotationProcessor(libs.jmh.generator.annprocess)
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)
     testRuntimeOnly(libs.junit.platform.launcher)
 }
 
+// The JMH benchmark compiles with the tests so that it cannot rot (see docs/benchmarks.md).
+sourceSets {
+    test {
+        java.srcDir("src/jmh/java")
+    }
+}

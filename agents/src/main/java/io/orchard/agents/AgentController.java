@@ -9,6 +9,8 @@ import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpreter;
+import io.orchard.agents.language.LanguageModel;
+import io.orchard.agents.language.LanguageModelInterpreter;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.ErrorMessage;
@@ -57,6 +59,7 @@ public abstract class AgentController {
     private final Situation situation = new Situation();
     private final ControllerMotor motor;
     private final Behaviours behaviours;
+    private volatile @Nullable Interpreter languageModel;
     private final GameLoop loop;
 
     /**
@@ -230,7 +233,17 @@ public abstract class AgentController {
      * English (docs/instructions.md) and is made once; override to plug in another {@link Interpreter}.
      */
     protected Interpreter interpreter() {
-        return behaviours.interpreter();
+        Interpreter consulting = languageModel;
+        return consulting != null ? consulting : behaviours.interpreter();
+    }
+
+    /**
+     * Has the default {@link #interpreter()} ask a language model for the sentences its grammar does
+     * not understand ({@link LanguageModelInterpreter}); off unless called. Whatever the grammar
+     * understands is read as before, so games with the shipped agents stay reproducible.
+     */
+    public final void consultLanguageModel(LanguageModel model) {
+        languageModel = new LanguageModelInterpreter(behaviours.interpreter(), model);
     }
 
     // ---- what the agent knows ----------------------------------------------------------------

@@ -94,6 +94,11 @@ final class Behaviours {
             return;
         }
         if (heard instanceof Interpretation.Understood understood) {
+            if (!understood.restatement().equals(understood.goal().restatement())) {
+                // Read by another interpreter than the grammar (a language model, a student's): what
+                // it made of the sentence is said before the errand announces itself.
+                motor.say(understood.restatement());
+            }
             onGoal.accept(understood.goal());
         } else if (heard instanceof Interpretation.NotUnderstood notUnderstood) {
             if (!errands().answer(text)) {

@@ -39,6 +39,9 @@ final class AgentCommand implements Callable<Integer> {
     @Mixin
     private ResumeTokensOption resumeTokens;
 
+    @Mixin
+    private LanguageModelOptions languageModel;
+
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
 
@@ -64,6 +67,7 @@ final class AgentCommand implements Callable<Integer> {
         String name = this.name == null ? species.agentName() : this.name;
         AgentController agent = species.create(name);
         resumeTokens.keep(agent);
+        languageModel.apply(agent);
         agent.addSpeechListener(text -> out.println(name + ": " + text));
         AgentMain.listen(console, agent::instruct);
         out.printf(Locale.ROOT, "%s (%s) is connecting to %s:%d; type instructions for it here.%n", name,

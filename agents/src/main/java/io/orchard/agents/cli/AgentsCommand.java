@@ -34,6 +34,9 @@ final class AgentsCommand implements Callable<Integer> {
     @Mixin
     private ResumeTokensOption resumeTokens;
 
+    @Mixin
+    private LanguageModelOptions languageModel;
+
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
 
@@ -53,6 +56,8 @@ final class AgentsCommand implements Callable<Integer> {
         for (Species species : Species.values()) {
             AgentController agent = species.create();
             resumeTokens.keep(agent);
+        languageModel.apply(agent);
+            languageModel.apply(agent);
             agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);
         }

@@ -41,6 +41,7 @@ class AgentMainTest {
         void theHelpListsEveryOption() throws Exception {
             assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [OPTIONS]", "--type=TYPE",
                     "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--resume-tokens=FILE",
+                    "--language-model=URL", "--language-model-name=MODEL", "--language-model-timeout=SECONDS",
                     "(default: " + Path.of(System.getProperty("user.home"), ".orchard", "resume-tokens"), "--help");
             assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N",
                     "--resume-tokens=FILE")
@@ -57,6 +58,10 @@ class AgentMainTest {
             port zero       | agent  | --type bunny --port 0      | orchard agent: invalid value for option '--port': '0' is out of range (expected a port 1-65535)
             port not number | agent  | --type bunny --port seven  | orchard agent: invalid value for option '--port': 'seven' is not an integer (expected a port 1-65535)
             type of agents  | agents | --type bunny               | orchard agents: unknown options: '--type', 'bunny'
+            model no name   | agent  | --type bunny --language-model http://localhost:11434/v1 | orchard agent: --language-model needs --language-model-name MODEL, the model to ask
+            name no model   | agents | --language-model-name llama3.2 | orchard agents: --language-model-name needs --language-model URL
+            model bad url   | agent  | --type bunny --language-model localhost:11434 --language-model-name m | orchard agent: invalid value for option '--language-model': 'localhost:11434' (expected an http or https address such as http://localhost:11434/v1)
+            model timeout   | agents | --language-model http://h/v1 --language-model-name m --language-model-timeout 0 | orchard agents: invalid value for option '--language-model-timeout': '0.0' (expected seconds, more than 0 and at most 600)
             """)
         void wrongCommandLinesAreNamedAndExitWithTwo(String name, String command, String line, String message) {
             List<String> args = line == null ? List.of() : List.of(line.split(" "));

@@ -1,0 +1,106 @@
+package io.orchard.agents.language;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import com.networknt.schema.InputFormat;
+import com.networknt.schema.Schema;
+import com.networknt.schema.SchemaRegistry;
+import com.networknt.schema.SpecificationVersion;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/** The goals' JSON Schema takes every goal the grammar makes and refuses what GoalJson.read refuses. */
+class GoalSchemaTest {
+
+    private static final Path PUBLISHED = Path.of("..", "docs", "goal.schema.json");
+    private static Schema schema;
+
+    @BeforeAll
+    static void load() {
+        schema = SchemaRegistry.withDefaultDialect(SpecificationVersion.DRAFT_2020_12)
+                .getSchema(GoalSchema.json(), InputFormat.JSON);
+    }
+
+    @Test
+    void thePublishedSchemaIsTheOneTheCodeMakes() throws IOException {
+        if ("write".equals(System.getProperty("orchard.goal.schema"))) {
+            Files.writeString(PUBLISHED, GoalSchema.json(), StandardCharsets.UTF_8);
+        }
+        assertThat(Files.readString(PUBLISHED, StandardCharsets.UTF_8))
+                .as("docs/goal.schema.json; write it again with ./mvnw -pl agents test -Dtest=GoalSchemaTest "
+                        + "-Dorchard.goal.schema=write")
+                .isEqualTo(GoalSchema.json());
+    }
+
+    @Test
+    void everyGoalTheGrammarMakesOfBothSetsOfInstructionsFitsTheSchema() throws IOException {
+        InstructionInterpreter grammar = new InstructionInterpreter();
+        int goals = 0;
+        for (String sentence : sentences()) {
+            if (grammar.interpret(sentence) instanceof Interpretation.Understood understood) {
+                String json = GoalJson.write(understood.goal());
+                assertThat(schema.validate(json, InputFormat.JSON)).as("\"%s\" as %s", sentence, json).isEmpty();
+                assertThat(GoalJson.read(json)).isEqualTo(understood.goal());
+                goals++;
+            }
+        }
+        assertThat(goals).as("goals checked").isGreaterThan(300);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {
+        "{\"goal\":\"dance\"}",
+        "{\"goal\":\"collect\",\"what\":{\"kind\":\"tree\"},\"count\":1}",
+        "{\"goal\":\"collect\",\"what\":{\"kind\":\"banana\"},\"count\":0}",
+        "{\"goal\":\"collect\",\"what\":{\"kind\":\"banana\"}}",
+        "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"castle\",\"place\":{\"relation\":\"inside-of\"}}}",
+        "{\"goal\":\"sequence\",\"steps\":[{\"goal\":\"stop\"}]}",
+        "{\"goal\":\"sequence\",\"steps\":[{\"goal\":\"stop\"},{\"goal\":\"sequence\",\"steps\":"
+                + "[{\"goal\":\"stop\"},{\"goal\":\"carry-on\"}]}]}",
+        "{\"goal\":\"head\",\"direction\":\"up\"}",
+        "{\"goal\":\"move\",\"direction\":\"forward\",\"distance\":0}",
+        "{\"goal\":\"ask\",\"topic\":\"the-weather\"}",
+        "{\"goal\":\"wait\",\"seconds\":-1}"})
+    void whatGoalJsonRefusesTheSchemaRefusesToo(String json) {
+        assertThatThrownBy(() -> GoalJson.read(json)).isInstanceOf(IllegalArgumentException.class);
+        assertThat(schema.validate(json, InputFormat.JSON)).as(json).isNotEmpty();
+    }
+
+    @Test
+    void aFieldNoGoalHasIsRefusedSoThatAModelCannotSlipInAPartNoOneActsOn() {
+        String json = "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"castle\"},\"speed\":\"fast\"}";
+
+        assertThat(schema.validate(json, InputFormat.JSON)).as(json).isNotEmpty();
+        assertThat(schema.validate("{\"goal\":\"go-to\",\"destination\":{\"kind\":\"castle\"}}", InputFormat.JSON))
+                .isEmpty();
+    }
+
+    static List<String> sentences() throws IOException {
+        List<String> sentences = new ArrayList<>();
+        for (String set : List.of("/language/corpus.tsv", "/language/fresh.tsv")) {
+            try (InputStream in = Objects.requireNonNull(GoalSchemaTest.class.getResourceAsStream(set), set);
+                 BufferedReader lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
+                for (String line = lines.readLine(); line != null; line = lines.readLine()) {
+                    int tab = line.indexOf('\t');
+                    if (!line.startsWith("#") && tab > 0) {
+                        sentences.add(line.substring(0, tab));
+                    }
+                }
+            }
+        }
+        return sentences;
+    }
+}
