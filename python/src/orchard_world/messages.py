@@ -16,7 +16,7 @@ import json
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
 from .errors import ProtocolError
 
@@ -657,7 +657,7 @@ def _heading(rotation: Dict[str, Any]) -> float:
     return -angle if float(rotation["axis"]["y"]) < 0 else angle
 
 
-_DECODERS = {
+_DECODERS: Dict[str, Callable[[_Fields], ServerMessage]] = {
     "Welcome": lambda f: Welcome(f.req("seq"), f.req("protocolVersion"), f.req("serverVersion"), f.req("role"),
                                  _bounds(f.req("bounds")), f.req("tickRate"), f.req("clock"), f.req("tick"),
                                  f.opt("timeLimit"), f.opt("phase")),

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Sequence
+from typing import Any, Dict, List, Optional, Sequence
 
 from ..client import Connection
-from ..errors import ConnectionClosed, OrchardError, ServerError
+from ..errors import ConnectionClosed, ServerError
 from ..messages import (ActionResult, AgentAdded, AgentMoved, AgentRotated, Body, ClientMessage, EndTurn, Error,
-                        FruitRemoved, GameOver, GraspRequest, GraspResult, LeanPerception, Move, Point2,
+                        FruitRemoved, FruitState, GameOver, GraspRequest, GraspResult, LeanPerception, Move, Point2,
                         PerceptionRequest, Register, Registered, ScoreUpdate, SetRotation, Tick, WorldSnapshot)
 from . import _observe
 
@@ -41,8 +41,8 @@ class _Group:
 class WorldView:
     """What a viewer connection knows of the world, for drawing it."""
     snapshot: Optional[WorldSnapshot] = None
-    fruit: Dict[str, object] = field(default_factory=dict)
-    agents: Dict[str, List[object]] = field(default_factory=dict)  # name -> [AgentMoved or position, heading, r]
+    fruit: Dict[str, FruitState] = field(default_factory=dict)
+    agents: Dict[str, List[Any]] = field(default_factory=dict)  # name -> [AgentMoved or Vec3, heading, radius]
     time: float = 0.0
 
 
@@ -212,4 +212,4 @@ def check_options(**values: object) -> None:
             raise ValueError(f"{name} must be a number from {low} to {high}, was {value!r}")
 
 
-__all__ = ["Game", "Learner", "check_options", "OrchardError"]
+__all__ = ["Game", "Learner", "check_options"]

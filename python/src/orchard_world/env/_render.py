@@ -70,17 +70,19 @@ class Painter:
     def frame(self, view: WorldView, learners: Sequence[str]) -> np.ndarray:
         image = self.base.copy()
         for f in view.fruit.values():
-            self._disc(image, f.position.x, f.position.z, 0.6, FRUIT.get(f.kind, (0, 0, 0)))  # type: ignore[attr-defined]
+            self._disc(image, f.position.x, f.position.z, 0.6, FRUIT.get(f.kind, (0, 0, 0)))
         for name, (where, _heading, radius) in view.agents.items():
             x, z = _position(where, view.time)
-            self._disc(image, x, z, max(float(radius), 1.0), LEARNER if name in learners else OTHER)  # type: ignore[arg-type]
+            colour = LEARNER if name in learners else OTHER
+            self._disc(image, x, z, max(float(radius), 3.0 / self.scale), colour)
         return image
 
 
 def _position(where: object, time: float) -> Tuple[float, float]:
     if isinstance(where, AgentMoved):
         share = 1.0 if where.duration <= 0 else min(1.0, max(0.0, (time - where.start_time) / where.duration))
-        return (where.start.x + (where.to.x - where.start.x) * share, where.start.z + (where.to.z - where.start.z) * share)
+        return (where.start.x + (where.to.x - where.start.x) * share,
+                where.start.z + (where.to.z - where.start.z) * share)
     assert isinstance(where, Vec3)
     return where.x, where.z
 
