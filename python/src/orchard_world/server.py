@@ -28,6 +28,8 @@ __all__ = ["java_classpath", "ServerProcess", "start_opponents", "LAUNCHER"]
 
 LAUNCHER = "io.orchard.examples.Orchard"
 SPECIES = ("Dwarf", "Robot", "Bunny", "Guppy", "Roadrunner")
+# Quick to start, which matters most for many short games: the client compiler alone, a small heap.
+JAVA_OPTIONS = ("-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-Xmx512m")
 _LISTENING = re.compile(r"listening on port (\d+)")
 
 
@@ -122,7 +124,7 @@ class ServerProcess(_JavaProcess):
 
     def __init__(self, *, seed: int, clock: str = "lockstep", time_limit: float = 60.0, wait_for: int = 0,
                  turn_deadline: float = 60.0, tick_rate: int = 20, extra: Sequence[str] = (),
-                 java: str = "java", java_options: Sequence[str] = ("-XX:+UseSerialGC", "-Xmx512m"),
+                 java: str = "java", java_options: Sequence[str] = JAVA_OPTIONS,
                  start_timeout: float = 60.0) -> None:
         args = ["server", "--port", "0", "--seed", str(seed), "--clock", clock, "--time-limit", repr(float(time_limit)),
                 "--wait-for", str(wait_for), "--turn-deadline", repr(float(turn_deadline)),
@@ -141,7 +143,7 @@ class ServerProcess(_JavaProcess):
 
 
 def start_opponents(port: int, species: Sequence[str], tokens_file: str, java: str = "java",
-                    java_options: Sequence[str] = ("-XX:+UseSerialGC", "-Xmx512m")) -> List[_JavaProcess]:
+                    java_options: Sequence[str] = JAVA_OPTIONS) -> List[_JavaProcess]:
     """The paper's agents named in ``species`` playing on ``port``: all five in one JVM, else one each."""
     unknown = [s for s in species if s not in SPECIES]
     if unknown:

@@ -13,7 +13,7 @@ from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
 from ..messages import Body, check_name
-from ..server import SPECIES, ServerProcess, start_opponents
+from ..server import JAVA_OPTIONS, SPECIES, ServerProcess, start_opponents
 from . import _observe, _render
 from ._game import Game, check_options
 
@@ -33,8 +33,9 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
     - ``body``: the learners' :class:`~orchard_world.messages.Body`;
     - ``render_mode``: ``"rgb_array"`` or None; ``render_size``: the frame's side in pixels (256);
     - ``server``: ``"host:port"`` of a running lockstep server to play on, instead of starting one;
-    - ``turn_deadline``: seconds a tick waits for a slow agent (default 60), ``java``: the java
-      command.
+    - ``turn_deadline``: seconds a tick waits for a slow agent (default 60); ``java``: the java
+      command, ``java_options``: its options (quick to start; without ``-XX:TieredStopAtLevel=1``
+      a long game runs faster).
     """
 
     metadata = {"render_modes": ["rgb_array"], "name": "orchard_world_v0", "is_parallelizable": True,
@@ -43,7 +44,8 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
     def __init__(self, agents: int = 2, names: Optional[Sequence[str]] = None, opponents: Sequence[str] = (),
                  time_limit: float = 60.0, ticks_per_step: int = 2, turn_angle: float = math.pi / 8,
                  body: Optional[Body] = None, render_mode: Optional[str] = None, render_size: int = 256,
-                 server: Optional[str] = None, turn_deadline: float = 60.0, java: str = "java") -> None:
+                 server: Optional[str] = None, turn_deadline: float = 60.0, java: str = "java",
+                 java_options: Sequence[str] = JAVA_OPTIONS) -> None:
         if names is None:
             check_options(agents=agents)
             names = [f"learner_{i}" for i in range(agents)]
@@ -77,6 +79,7 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
         self.render_size = render_size
         self.turn_deadline = turn_deadline
         self.java = java
+        self.java_options = tuple(java_options)
         self.metadata = dict(self.metadata, render_fps=max(1, round(20 / ticks_per_step)))
         self._np_random, _ = seeding.np_random(None)
         self._server: Optional[ServerProcess] = None
@@ -108,9 +111,11 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
         if self.address is None:
             self._server = ServerProcess(seed=self.world_seed, time_limit=self.time_limit,
                                          wait_for=len(self.possible_agents) + len(self.opponents),
-                                         turn_deadline=self.turn_deadline, java=self.java)
+                                         turn_deadline=self.turn_deadline, java=self.java,
+                                         java_options=self.java_options)
             host, port = "127.0.0.1", self._server.port
-            self._opponents = start_opponents(port, self.opponents, self._tokens.name, java=self.java)
+            self._opponents = start_opponents(port, self.opponents, self._tokens.name, java=self.java,
+                                              java_options=self.java_options)
         else:
             host, port = self.address
         self._cache.clear()

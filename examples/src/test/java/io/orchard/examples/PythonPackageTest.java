@@ -34,7 +34,7 @@ class PythonPackageTest {
         run(List.of(python.toString(), "-m", "pip", "install", "--quiet", "--disable-pip-version-check",
                 PACKAGE + "[test]"), 15);
         String output = run(List.of(python.toString(), "-m", "pytest", "-q", "-p", "no:cacheprovider",
-                PACKAGE.resolve("tests").toString()), 20);
+                PACKAGE.resolve("tests").toString()), 30);
         Matcher passed = Pattern.compile("(\\d+) passed").matcher(output);
         assertThat(passed.find()).as(output).isTrue();
         assertThat(Integer.parseInt(passed.group(1))).as(output).isGreaterThanOrEqualTo(30);
