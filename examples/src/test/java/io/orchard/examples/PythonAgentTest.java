@@ -106,7 +106,7 @@ class PythonAgentTest {
         return new ProcessBuilder(command);
     }
 
-    private static String findPython() throws IOException {
+    static String findPython() throws IOException {
         for (String candidate : List.of("python3", "python")) {
             try {
                 Process probe = new ProcessBuilder(candidate, "--version").redirectErrorStream(true).start();
