@@ -33,7 +33,7 @@ function send(message) {
     return -1;
 }
 
-function connect(operatorToken) {
+function connect(operatorToken, token) {
     state.socket?.close();
     if (state.world) {
         scene.remove(state.world);
@@ -49,6 +49,9 @@ function connect(operatorToken) {
         const hello = { type: 'Hello', protocolVersion: 2, role: 'viewer', client: 'orchard-web' };
         if (operatorToken) {
             hello.operatorToken = operatorToken;
+        }
+        if (token) {
+            hello.token = token;
         }
         send(hello);
     };
@@ -253,7 +256,7 @@ $('instruct').onsubmit = event => {
 };
 $('operator').onsubmit = event => {
     event.preventDefault();
-    connect($('token').value);
+    connect($('token').value, $('access').value);
 };
 $('start').onclick = () => control('start');
 $('pause').onclick = () => control('pause');
@@ -291,5 +294,5 @@ window.orchard = {
     },
 };
 
-connect(null);
+connect(null, null);
 requestAnimationFrame(frame);

@@ -19,6 +19,8 @@ import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
 import io.netty.util.ReferenceCountUtil;
 import io.orchard.protocol.MessageCodec;
 import java.net.InetSocketAddress;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * A browser's WebSocket, once open, relayed line for line to a connection of its own to the game
@@ -32,6 +34,8 @@ final class Relay extends ChannelInboundHandlerAdapter {
     private static final byte NEWLINE = '\n';
 
     private final InetSocketAddress game;
+    /** Lines the page sent while the server's connection was being opened: a read already under way. */
+    private final List<ByteBuf> early = new ArrayList<>();
     private Channel server;
 
     Relay(InetSocketAddress game) {
@@ -65,9 +69,14 @@ final class Relay extends ChannelInboundHandlerAdapter {
                 .addListener((ChannelFutureListener) connected -> {
                     if (connected.isSuccess()) {
                         server = connected.channel();
+                        early.forEach(server::write);
+                        early.clear();
+                        server.flush();
                         server.closeFuture().addListener(closed -> closeBrowser(browser));
                         browser.config().setAutoRead(true);
                     } else {
+                        early.forEach(ByteBuf::release);
+                        early.clear();
                         browser.writeAndFlush(new CloseWebSocketFrame(WebSocketCloseStatus.ENDPOINT_UNAVAILABLE,
                                 "the game server cannot be reached")).addListener(ChannelFutureListener.CLOSE);
                     }
@@ -76,7 +85,7 @@ final class Relay extends ChannelInboundHandlerAdapter {
 
     @Override
     public void channelRead(ChannelHandlerContext context, Object message) {
-        if (!(message instanceof TextWebSocketFrame frame) || server == null) {
+        if (!(message instanceof TextWebSocketFrame frame)) {
             // Binary frames mean nothing in a protocol of text lines.
             ReferenceCountUtil.release(message);
             return;
@@ -92,7 +101,11 @@ final class Relay extends ChannelInboundHandlerAdapter {
         ByteBuf out = context.alloc().buffer(line.readableBytes() + 1);
         out.writeBytes(line).writeByte(NEWLINE);
         frame.release();
-        server.writeAndFlush(out);
+        if (server == null) {
+            early.add(out);
+        } else {
+            server.writeAndFlush(out);
+        }
     }
 
     @Override
@@ -106,6 +119,8 @@ final class Relay extends ChannelInboundHandlerAdapter {
 
     @Override
     public void channelInactive(ChannelHandlerContext context) {
+        early.forEach(ByteBuf::release);
+        early.clear();
         if (server != null) {
             server.close();
         }
