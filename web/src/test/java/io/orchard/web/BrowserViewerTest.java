@@ -63,13 +63,17 @@ class BrowserViewerTest {
             threads.submit(() -> agent.run("127.0.0.1", server.port()));
         }
         CompletableFuture<WorldSnapshotMessage> snapshot = new CompletableFuture<>();
-        try (ProtocolConnection viewer = ProtocolConnection.connect("127.0.0.1", server.port(), Role.VIEWER,
+        // The world as a viewer of the test's own hears it, to know where the page should draw what.
+        ProtocolConnection viewer = ProtocolConnection.connect("127.0.0.1", server.port(), Role.VIEWER,
                 "browser-test", message -> {
                     if (message instanceof WorldSnapshotMessage s) {
                         snapshot.complete(s);
                     }
-                })) {
+                });
+        try {
             world = snapshot.get(30, TimeUnit.SECONDS);
+        } finally {
+            viewer.close();
         }
         browser = Chromium.start(1280, 720);
         browser.open("http://127.0.0.1:" + server.httpPort().orElseThrow() + "/");
