@@ -17,6 +17,7 @@ dependencies {
         api(project(":server"))
         api(project(":agents"))
         api(project(":viewer"))
+        api(project(":web"))
     }
 }
 

@@ -14,6 +14,8 @@ dependencies {
     implementation(project(":server"))
     implementation(project(":agents"))
     implementation(project(":viewer"))
+    // The server's browser viewer, found on the class path when a page is asked for.
+    runtimeOnly(project(":web"))
     implementation(libs.slf4j.api)
     implementation(libs.logback.classic)
     implementation(libs.jsonschema.generator)

@@ -3,6 +3,7 @@ package io.orchard.build;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.slices;
 
+import com.tngtech.archunit.base.DescribedPredicate;
 import com.tngtech.archunit.core.domain.JavaClass;
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
@@ -10,6 +11,7 @@ import com.tngtech.archunit.core.importer.ImportOption;
 import com.tngtech.archunit.lang.ArchRule;
 import com.tngtech.archunit.library.dependencies.SliceAssignment;
 import com.tngtech.archunit.library.dependencies.SliceIdentifier;
+import io.orchard.server.WebFrontEnd;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
@@ -17,9 +19,10 @@ import org.junit.jupiter.api.Test;
 /**
  * The directions the modules and packages depend in, read from the compiled classes of every
  * module: protocol and cli (the command lines' shared converters and errors) under everything,
- * knowing nothing of each other; server, agents and viewer beside each other, examples on top;
- * Netty and JTS only in the server (JTS only in its world), jMonkeyEngine only in the viewer; no
- * cycle between packages, and none between the classes of the server's simulation.
+ * knowing nothing of each other; server, agents and viewer beside each other, the web viewer on the
+ * server, examples on top; Netty only in the server's network and the web viewer's HTTP side, JTS
+ * only in the server's world, jMonkeyEngine only in the viewer; no cycle between packages, and none
+ * between the classes of the server's simulation.
  */
 class ArchitectureTest {
 
@@ -81,9 +84,43 @@ class ArchitectureTest {
         }
 
         @Test
-        void nettyOnlyInTheServersNetwork() {
-            check(noClasses().that().resideOutsideOfPackage("io.orchard.server.net..")
+        void nettyOnlyInTheServersNetworkAndTheWebViewer() {
+            check(noClasses().that().resideOutsideOfPackages("io.orchard.server.net..", "io.orchard.web")
                     .should().dependOnClassesThat().resideInAPackage("io.netty.."));
+        }
+
+        /**
+         * The web viewer is the server's other network side, an HTTP port that serves a page and
+         * relays its WebSocket: it takes Netty's transport, buffers, HTTP and WebSocket codec and the
+         * line framing, and nothing else of Netty (no other protocol, no native transport).
+         */
+        @Test
+        void theWebViewerUsesNettyForHttpWebSocketsAndLinesAlone() {
+            check(noClasses().that().resideInAPackage("io.orchard.web")
+                    .should().dependOnClassesThat(JavaClass.Predicates.resideInAPackage("io.netty..")
+                            .and(DescribedPredicate.not(JavaClass.Predicates.resideInAnyPackage("io.netty.bootstrap",
+                                    "io.netty.buffer", "io.netty.channel", "io.netty.channel.nio",
+                                    "io.netty.channel.socket", "io.netty.channel.socket.nio",
+                                    "io.netty.handler.codec", "io.netty.handler.codec.http",
+                                    "io.netty.handler.codec.http.websocketx", "io.netty.util",
+                                    "io.netty.util.concurrent")))));
+        }
+
+        /**
+         * The web viewer knows of the server only the interface it provides, and speaks to the game
+         * over the protocol like any client; nothing depends on it (the server finds it by
+         * ServiceLoader, the launcher has it on its class path).
+         */
+        @Test
+        void theWebViewerKnowsTheServerByItsFrontEndAloneAndNothingKnowsIt() {
+            check(noClasses().that().resideInAPackage("io.orchard.web")
+                    .should().dependOnClassesThat(JavaClass.Predicates.resideInAPackage("io.orchard.server..")
+                            .and(DescribedPredicate.not(JavaClass.Predicates.belongToAnyOf(WebFrontEnd.class)))));
+            check(noClasses().that().resideInAPackage("io.orchard.web")
+                    .should().dependOnClassesThat().resideInAnyPackage("io.orchard.agents..", "io.orchard.viewer..",
+                            "io.orchard.examples..", "org.locationtech..", "com.jme3.."));
+            check(noClasses().that().resideOutsideOfPackage("io.orchard.web")
+                    .should().dependOnClassesThat().resideInAPackage("io.orchard.web"));
         }
 
         @Test

@@ -61,6 +61,11 @@ public final class ServerMain implements Callable<Integer> {
             description = "Address to listen on; 0.0.0.0 for every interface (default: ${DEFAULT-VALUE})")
     private String bind;
 
+    @Option(names = "--http-port", paramLabel = "N", converter = CommandLines.Port.class,
+            description = "Also serve the browser viewer, a page at http://ADDRESS:N/ (0 picks a free port; off unless"
+                    + " given; needs the web module, which ./orchard has)")
+    private Integer httpPort;
+
     @Option(names = "--seed", paramLabel = "N", converter = Seed.class,
             description = "Seed of the world; drawn and printed when absent")
     private Long seed;
@@ -204,6 +209,7 @@ public final class ServerMain implements Callable<Integer> {
              ShutdownSave onEnd = ShutdownSave.install(server, checkpoint != null, out)) {
             out.printf(Locale.ROOT, "Orchard server %s listening on port %d, seed %d, %s clock%n", Version.current(),
                     server.port(), server.seed(), resume != null ? "the saved game's" : clock.wireName());
+            server.httpPort().ifPresent(http -> out.println("browser viewer at " + pageAddress(bind, http)));
             if (resume != null) {
                 out.println("resumed from " + resume + ": " + server.status());
             }
@@ -233,6 +239,9 @@ public final class ServerMain implements Callable<Integer> {
     }
 
     private void configure(WorldServer.Builder builder) {
+        if (httpPort != null) {
+            builder.httpPort(httpPort);
+        }
         builder.port(port).bind(bind)
                 .clock(clock)
                 .tickRate(tickRate)
@@ -327,6 +336,13 @@ public final class ServerMain implements Callable<Integer> {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    /** The page's address as a person types it: every interface's server is reached on this machine's loopback. */
+    static String pageAddress(String bind, int port) {
+        String host = bind.equals("0.0.0.0") || bind.equals("::") ? "localhost"
+                : bind.contains(":") ? "[" + bind + "]" : bind;
+        return "http://" + host + ":" + port + "/";
     }
 
     static void printRanking(List<Score> ranking, PrintStream out) {

@@ -85,6 +85,17 @@ final class Startup {
             throw new IOException("cannot listen on " + settings.bind + ":" + settings.port + ": " + e.getMessage(),
                     e);
         }
+        WebFrontEnd.Serving web = null;
+        if (settings.httpPort != null) {
+            try {
+                web = WebPage.serve(new InetSocketAddress(settings.bind, settings.httpPort), net.address());
+            } catch (IOException | RuntimeException e) {
+                net.close();
+                recorder.close();
+                checkpoints.close();
+                throw e;
+            }
+        }
         TickLoop loop = new TickLoop(simulation);
         Thread thread = new Thread(loop, "orchard-tick");
         // The one thread the game waits for comes first. (The JVM passes this on to the system only
@@ -95,6 +106,6 @@ final class Startup {
             checkpoints.every(settings.checkpointEvery, () -> simulation.checkpointAtTickEnd(
                     state -> checkpoints.write(state, settings.checkpointFile, null)));
         }
-        return new WorldServer(simulation, net, loop, thread, recorder, over, checkpoints);
+        return new WorldServer(simulation, net, loop, thread, recorder, over, checkpoints, web);
     }
 }

@@ -19,6 +19,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.OptionalInt;
 import java.util.concurrent.CompletableFuture;
 import java.util.stream.Collectors;
 
@@ -51,10 +52,11 @@ public final class WorldServer implements AutoCloseable {
     private final Recorder recorder;
     private final CompletableFuture<List<Score>> gameOver;
     private final Checkpoints checkpoints;
+    private final WebFrontEnd.Serving web;
     private boolean closed;
 
     WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
-                CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints) {
+                CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints, WebFrontEnd.Serving web) {
         this.simulation = simulation;
         this.net = net;
         this.loop = loop;
@@ -62,6 +64,7 @@ public final class WorldServer implements AutoCloseable {
         this.recorder = recorder;
         this.gameOver = gameOver;
         this.checkpoints = checkpoints;
+        this.web = web;
     }
 
     /** A builder with the defaults: port 7557 on loopback, a random seed, realtime at 20 ticks/s. */
@@ -77,6 +80,14 @@ public final class WorldServer implements AutoCloseable {
     /** The address and port the server listens on. */
     public InetSocketAddress address() {
         return net.address();
+    }
+
+    /**
+     * The port the browser viewer's page is served on, when the server was built with
+     * {@link Builder#httpPort(int)}; empty otherwise.
+     */
+    public OptionalInt httpPort() {
+        return web == null ? OptionalInt.empty() : OptionalInt.of(web.address().getPort());
     }
 
     /** The seed the world was made from. */
@@ -232,6 +243,9 @@ public final class WorldServer implements AutoCloseable {
             Thread.currentThread().interrupt();
         }
         checkpoints.close();
+        if (web != null) {
+            web.close();
+        }
         net.close();
         simulation.stopped();
         recorder.close();
@@ -247,6 +261,7 @@ public final class WorldServer implements AutoCloseable {
         // The settings, read by Startup when it puts the server together.
         String bind = "127.0.0.1";
         int port = DEFAULT_PORT;
+        Integer httpPort;
         Long seed;
         ClockMode clock = ClockMode.REALTIME;
         int tickRate = SimulationConfig.DEFAULT.tickRate();
@@ -279,6 +294,20 @@ public final class WorldServer implements AutoCloseable {
                 throw new IllegalArgumentException("port must be 0 to 65535, was " + port);
             }
             this.port = port;
+            return this;
+        }
+
+        /**
+         * Also serve the browser viewer, a page at {@code http://host:port/} whose script watches the
+         * game and instructs its agents over a WebSocket, on this port of the same address (0 for any
+         * free one; see {@link WorldServer#httpPort()}). Off unless asked; it needs the web module
+         * ({@code io.orchard:web}) on the class path, and {@link #start()} says so when it is missing.
+         */
+        public Builder httpPort(int port) {
+            if (port < 0 || port > 65535) {
+                throw new IllegalArgumentException("HTTP port must be 0 to 65535, was " + port);
+            }
+            this.httpPort = port;
             return this;
         }
 

@@ -33,6 +33,21 @@ class WorldServerStartTest {
     }
 
     @Test
+    void aBrowserViewerWithoutTheWebModuleIsRefusedSayingWhatIsMissing() throws IOException {
+        try (WorldServer plain = WorldServer.builder().port(0).seed(1).start()) {
+            assertThat(plain.httpPort()).as("HTTP port of a server not asked for one").isEmpty();
+        }
+        // The server module's tests run without the web module, as a program that embeds it may.
+        assertThatThrownBy(() -> WorldServer.builder().port(0).httpPort(0).seed(1).start())
+                .isInstanceOf(IOException.class)
+                .hasMessage("cannot serve the browser viewer on port 0: the web module (io.orchard:web) is not on"
+                        + " the class path (expected it beside the server, as ./orchard has it)");
+        assertThatThrownBy(() -> WorldServer.builder().httpPort(65536))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("HTTP port must be 0 to 65535, was 65536");
+    }
+
+    @Test
     void anAddressThatIsNotThisMachinesIsNamed() {
         assertThatThrownBy(() -> WorldServer.builder().port(0).bind("192.0.2.1").seed(1).start())
                 .isInstanceOf(BindException.class)

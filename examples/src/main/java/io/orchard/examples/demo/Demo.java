@@ -35,8 +35,10 @@ import java.util.stream.Stream;
  * @param shots     the screenshots' folder (headless only)
  * @param xvfbRun   the xvfb-run to run a headless viewer under, or null when there is a display
  * @param every     simulated seconds between screenshots
+ * @param web       whether the server serves the browser viewer too, whose address is printed (and
+ *                  opened in the desktop's browser where there is one)
  */
-record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfbRun, double every) {
+record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfbRun, double every, boolean web) {
 
     /** How long the agents and the viewer may take to be ready before the game starts anyway. */
     private static final long READY_SECONDS = 60;
@@ -68,9 +70,17 @@ record Demo(Long seed, double timeLimit, boolean headless, Path shots, Path xvfb
         if (seed != null) {
             builder.seed(seed);
         }
+        if (web) {
+            builder.httpPort(0);
+        }
         try (WorldServer server = builder.start()) {
             out.printf(Locale.ROOT, "Orchard demo: seed %d, server on port %d, %s, a game of at most %.0f s%n",
                     server.seed(), server.port(), String.join(", ", lineup.names()), timeLimit);
+            if (web) {
+                String page = "http://127.0.0.1:" + server.httpPort().orElseThrow() + "/";
+                out.println("In a browser: " + page + " (operator token for the page: " + operator + ")");
+                BrowserPage.open(page, headless);
+            }
             if (headless) {
                 out.println("Screenshots every " + format(every) + " s of the game go to " + shots().toAbsolutePath());
             }

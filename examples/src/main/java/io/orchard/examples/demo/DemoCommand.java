@@ -44,6 +44,10 @@ public final class DemoCommand implements Callable<Integer> {
     @Option(names = "--headless", description = "Render off screen and write screenshots, even where there is a display")
     private boolean headless;
 
+    @Option(names = "--web", description = "Serve the browser viewer too: print its address, and open it where there"
+            + " is a desktop")
+    private boolean web;
+
     @Option(names = "--out", paramLabel = "DIR",
             description = "Folder of the screenshots (default: a new folder demo-<date>-<time>)")
     private Path dir;
@@ -90,7 +94,7 @@ public final class DemoCommand implements Callable<Integer> {
             out.println("No display: the viewer runs headless.");
         }
         Path folder = !headless ? null : dir != null ? Folders.given(dir) : Folders.fresh("demo");
-        return new Demo(seed, timeLimit, headless, folder, xvfbRun, EVERY).play(out, err);
+        return new Demo(seed, timeLimit, headless, folder, xvfbRun, EVERY, web).play(out, err);
     }
 
     /** A game of 1 s to a day. */

@@ -7,10 +7,18 @@ import io.orchard.examples.Orchard;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
@@ -55,6 +63,33 @@ class DemoCommandTest {
         BufferedImage first = ImageIO.read(shots.resolve("t0000.00.png").toFile());
         assertThat(first.getWidth()).isEqualTo(1280);
         assertThat(first.getHeight()).isEqualTo(720);
+    }
+
+    @Test
+    void withWebTheDemoPrintsTheAddressOfTheBrowserViewerWhichServesThePage() throws Exception {
+        assumeTrue(DemoCommand.hasDisplay() || HeadlessViewer.xvfbRun() != null,
+                "the headless viewer needs a display or xvfb-run (apt-get install xvfb xauth; .ci/run does this)");
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        CompletableFuture<Integer> status = CompletableFuture.supplyAsync(() -> Orchard.run(new String[] {"demo",
+                "--headless", "--web", "--time-limit", "4", "--seed", "1998", "--out", dir.resolve("shots").toString()},
+                out, out));
+
+        Pattern address = Pattern.compile("In a browser: (http://127\\.0\\.0\\.1:\\d+/) \\(operator token for the"
+                + " page: [0-9a-f]{32}\\)");
+        Matcher printed = address.matcher("");
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (!printed.reset(bytes.toString(StandardCharsets.UTF_8)).find() && !status.isDone()
+                && System.nanoTime() < deadline) {
+            Thread.sleep(50);
+        }
+        assertThat(printed.reset(bytes.toString(StandardCharsets.UTF_8)).find()).as(bytes.toString(
+                StandardCharsets.UTF_8)).isTrue();
+        HttpResponse<String> page = HttpClient.newHttpClient().send(HttpRequest.newBuilder(URI.create(printed.group(1)))
+                .build(), HttpResponse.BodyHandlers.ofString());
+        assertThat(page.statusCode()).isEqualTo(200);
+        assertThat(page.body()).contains("<canvas id=\"world\"");
+        assertThat(status.get(3, TimeUnit.MINUTES)).as(bytes.toString(StandardCharsets.UTF_8)).isZero();
     }
 
     @Test
