@@ -129,6 +129,8 @@ public class TickOutputBenchmark {
             sim.received(client, new PerceptionRequestMessage(++seq, "A" + i, 0));
         }
         sim.applyNow();
+        // The game would wait for every agent's setup turn: started at once, so that ticks perceive.
+        sim.start();
         SplittableRandom random = new SplittableRandom(2026);
         for (int tick = 0; tick < 3; tick++) {
             clients.forEach(client -> client.sent.clear());
