@@ -1,15 +1,20 @@
 package io.orchard.examples;
 
+import io.orchard.agents.cli.LanguageModelOptions;
 import io.orchard.agents.language.Ask;
 import io.orchard.agents.language.GoalJson;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
+import io.orchard.agents.language.Interpreter;
+import io.orchard.agents.language.LanguageModel;
+import io.orchard.agents.language.LanguageModelInterpreter;
 import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
@@ -29,7 +34,8 @@ import picocli.CommandLine.Spec;
                     + "restatement, or, when it does not understand, its answer, which names the words it does not "
                     + "know. The sentence may be one argument or several words; everything after -- is taken as the "
                     + "sentence. The grammar, the vocabulary and the forms of goals are described in "
-                    + "docs/instructions.md."},
+                    + "docs/instructions.md. With --language-model, a sentence the grammar does not understand is "
+                    + "given to that model, as an agent with the same options does."},
         descriptionHeading = "%n", parameterListHeading = "%nArguments:%n", optionListHeading = "%nOptions:%n",
         footerHeading = "%nExample:%n", footer = "  ./orchard parse \"get the nearest banana on a table\"")
 public final class ParseCommand implements Callable<Integer> {
@@ -41,6 +47,9 @@ public final class ParseCommand implements Callable<Integer> {
             description = "Other agents' names to know, separated by commas; Dwarf, Robot, Bunny, Guppy and Roadrunner "
                     + "are always known")
     private List<String> agentLists = new ArrayList<>();
+
+    @Mixin
+    private LanguageModelOptions languageModel;
 
     @Option(names = "--notation", description = "Print the goal in the compact notation instead of JSON")
     private boolean notation;
@@ -68,7 +77,12 @@ public final class ParseCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(),
                     "expected a sentence, for example: ./orchard parse \"go to the castle\"");
         }
-        Interpretation interpretation = new InstructionInterpreter(agents).interpret(String.join(" ", words));
+        Interpreter interpreter = new InstructionInterpreter(agents);
+        LanguageModel model = languageModel.model();
+        if (model != null) {
+            interpreter = new LanguageModelInterpreter(interpreter, model);
+        }
+        Interpretation interpretation = interpreter.interpret(String.join(" ", words));
         interpretation.addressee().ifPresent(name -> out.println("Addressed to " + name + "."));
         if (interpretation instanceof Interpretation.Understood understood) {
             out.println(notation ? understood.goal().notation() : GoalJson.writePretty(understood.goal()));

@@ -2,8 +2,11 @@ package io.orchard.examples;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import com.sun.net.httpserver.HttpServer;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -52,6 +55,34 @@ class ParseCommandTest {
                 Going to pick up the nearest banana that lies on a table.
                 """);
         assertThat(err.size()).isZero();
+    }
+
+    @Test
+    void aSentenceTheGrammarDoesNotKnowIsReadByTheLanguageModelWhenOneIsNamed() throws Exception {
+        HttpServer model = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 0);
+        byte[] answer = ("{\"choices\":[{\"message\":{\"role\":\"assistant\",\"content\":"
+                + "\"{\\\"goal\\\":\\\"go-to\\\",\\\"destination\\\":{\\\"kind\\\":\\\"castle\\\"}}\"}}]}")
+                .getBytes(StandardCharsets.UTF_8);
+        model.createContext("/v1/chat/completions", exchange -> {
+            exchange.getRequestBody().readAllBytes();
+            exchange.sendResponseHeaders(200, answer.length);
+            exchange.getResponseBody().write(answer);
+            exchange.close();
+        });
+        model.start();
+        try {
+            assertThat(run("--notation", "--language-model", "http://127.0.0.1:" + model.getAddress().getPort() + "/v1",
+                    "--language-model-name", "any", "wander over to the big stone house")).isZero();
+        } finally {
+            model.stop(0);
+        }
+        assertThat(out()).isEqualTo("go-to(castle)\nI asked a language model, which read that as: go-to(castle).\n");
+    }
+
+    @Test
+    void aLanguageModelWithoutItsNameIsAUsageError() {
+        assertThat(run("--language-model", "http://127.0.0.1:9/v1", "go home")).isEqualTo(2);
+        assertThat(err()).contains("orchard parse: --language-model needs --language-model-name MODEL");
     }
 
     @Test

@@ -10,28 +10,40 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.Spec;
 
-/** The language model that {@code agent} and {@code agents} may consult; none unless named. */
-final class LanguageModelOptions {
+/**
+ * The language model that {@code agent}, {@code agents} and {@code parse} may consult, as a picocli
+ * mixin: {@code --language-model URL}, {@code --language-model-name MODEL} and
+ * {@code --language-model-timeout SECONDS}; none unless named.
+ */
+public final class LanguageModelOptions {
+
+    /** Options from the command line only. */
+    public LanguageModelOptions() {
+    }
 
     @Option(names = "--language-model", paramLabel = "URL",
             description = "Ask the language model served at URL (an OpenAI-compatible API, such as "
                     + "http://localhost:11434/v1 for Ollama or http://localhost:8080/v1 for llama.cpp's server) for "
                     + "the instructions the agents' grammar does not understand; off unless given")
-    String url;
+    private String url;
 
     @Option(names = "--language-model-name", paramLabel = "MODEL",
             description = "The model to ask, as that server names it (needed with --language-model)")
-    String model;
+    private String model;
 
     @Option(names = "--language-model-timeout", paramLabel = "SECONDS", defaultValue = "10",
             description = "How long to wait for the model's answer (default: ${DEFAULT-VALUE})")
-    double timeoutSeconds;
+    private double timeoutSeconds;
 
     @Spec(Spec.Target.MIXEE)
-    CommandSpec spec;
+    private CommandSpec spec;
 
-    /** The model the options name; null when none is. */
-    LanguageModel model() {
+    /**
+     * The model the options name; null when none is.
+     *
+     * @throws ParameterException when the options are incomplete or a value is bad, naming it
+     */
+    public LanguageModel model() {
         if (url == null) {
             if (model != null) {
                 throw new ParameterException(spec.commandLine(), "--language-model-name needs --language-model URL");
