@@ -2,6 +2,7 @@ package io.orchard.agents.bench;
 
 import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.InstructionInterpreter;
+import io.orchard.agents.language.InstructionSets;
 import io.orchard.agents.language.Interpretation;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.agents.behaviour.GraspStatus;
@@ -20,14 +21,9 @@ import io.orchard.protocol.value.RelativePosition;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Sight;
 import io.orchard.protocol.value.Vec3;
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -56,17 +52,7 @@ public class FirstAnswerBenchmark {
 
     @Setup
     public void setUp() throws IOException {
-        for (String set : List.of("/language/corpus.tsv", "/language/fresh.tsv")) {
-            try (InputStream in = Objects.requireNonNull(FirstAnswerBenchmark.class.getResourceAsStream(set), set);
-                 BufferedReader lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
-                for (String line = lines.readLine(); line != null; line = lines.readLine()) {
-                    int tab = line.indexOf('\t');
-                    if (!line.startsWith("#") && tab > 0) {
-                        sentences.add(line.substring(0, tab));
-                    }
-                }
-            }
-        }
+        sentences.addAll(InstructionSets.sentences());
         Body body = new Body(0.4, 1.2, 6, new Gripper("hands", 0.7, 0, 2), new Sight(40, 2 * Math.PI));
         WorldMemory memory = new WorldMemory(new Bounds(-100, -100, 100, 100), body.radius(), body.sight());
         memory.perceive(perception(), null, null);

@@ -7,16 +7,10 @@ import com.networknt.schema.InputFormat;
 import com.networknt.schema.Schema;
 import com.networknt.schema.SchemaRegistry;
 import com.networknt.schema.SpecificationVersion;
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Objects;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -49,7 +43,7 @@ class GoalSchemaTest {
     void everyGoalTheGrammarMakesOfBothSetsOfInstructionsFitsTheSchema() throws IOException {
         InstructionInterpreter grammar = new InstructionInterpreter();
         int goals = 0;
-        for (String sentence : sentences()) {
+        for (String sentence : InstructionSets.sentences()) {
             if (grammar.interpret(sentence) instanceof Interpretation.Understood understood) {
                 String json = GoalJson.write(understood.goal());
                 assertThat(schema.validate(json, InputFormat.JSON)).as("\"%s\" as %s", sentence, json).isEmpty();
@@ -86,21 +80,5 @@ class GoalSchemaTest {
         assertThat(schema.validate(json, InputFormat.JSON)).as(json).isNotEmpty();
         assertThat(schema.validate("{\"goal\":\"go-to\",\"destination\":{\"kind\":\"castle\"}}", InputFormat.JSON))
                 .isEmpty();
-    }
-
-    static List<String> sentences() throws IOException {
-        List<String> sentences = new ArrayList<>();
-        for (String set : List.of("/language/corpus.tsv", "/language/fresh.tsv")) {
-            try (InputStream in = Objects.requireNonNull(GoalSchemaTest.class.getResourceAsStream(set), set);
-                 BufferedReader lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
-                for (String line = lines.readLine(); line != null; line = lines.readLine()) {
-                    int tab = line.indexOf('\t');
-                    if (!line.startsWith("#") && tab > 0) {
-                        sentences.add(line.substring(0, tab));
-                    }
-                }
-            }
-        }
-        return sentences;
     }
 }

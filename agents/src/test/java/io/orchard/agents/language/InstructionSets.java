@@ -1,0 +1,34 @@
+package io.orchard.agents.language;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+
+/** The sentences of the two sets of instructions, corpus.tsv and fresh.tsv, in file order. */
+public final class InstructionSets {
+
+    private InstructionSets() {
+    }
+
+    /** Every sentence of both sets, without the expected goals. */
+    public static List<String> sentences() throws IOException {
+        List<String> sentences = new ArrayList<>();
+        for (String set : List.of("/language/corpus.tsv", "/language/fresh.tsv")) {
+            try (InputStream in = Objects.requireNonNull(InstructionSets.class.getResourceAsStream(set), set);
+                 BufferedReader lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
+                for (String line = lines.readLine(); line != null; line = lines.readLine()) {
+                    int tab = line.indexOf('\t');
+                    if (!line.startsWith("#") && tab > 0) {
+                        sentences.add(line.substring(0, tab));
+                    }
+                }
+            }
+        }
+        return sentences;
+    }
+}
