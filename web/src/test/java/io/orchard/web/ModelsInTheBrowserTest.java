@@ -107,11 +107,18 @@ class ModelsInTheBrowserTest {
             // Facing north, so that the arm points to -z and a camera to the east sees it side on.
             accepted(connection.request(seq -> new SetRotationMessage(seq, model.name(), Rotation.heading(0))));
         }
+        // A model the page must refuse: it declares entities, the "billion laughs".
+        String laughs = "<?xml version='1.0'?><!DOCTYPE X3D [<!ENTITY a 'haha'><!ENTITY b '&a;&a;&a;&a;&a;'>]>"
+                + "<X3D><Scene><Transform DEF='Broken'><Shape><Box size='&b; 1 1'/></Shape></Transform></Scene></X3D>";
+        Reply broken = connection.request(seq -> new RegisterMessage(seq, "Broken", body, ModelSpec.of(ModelFormat.X3D,
+                laughs.getBytes(java.nio.charset.StandardCharsets.UTF_8)), null)).get(30, TimeUnit.SECONDS);
+        assertThat(broken).isInstanceOf(RegisteredMessage.class);
         accepted(connection.request(seq -> new PerceptionRequestMessage(seq, CRANE.name(), 1)));
         server.startGame();
         browser = Chromium.start(1280, 720);
         browser.open("http://127.0.0.1:" + server.httpPort().orElseThrow() + "/");
-        browser.await("window.orchard && orchard.ready && orchard.model('Crane') && orchard.model('Heron')", PATIENCE);
+        browser.await("window.orchard && orchard.ready && orchard.model('Crane') && orchard.model('Heron')"
+                + " && orchard.model('Broken')", PATIENCE);
     }
 
     @AfterAll
@@ -238,6 +245,15 @@ class ModelsInTheBrowserTest {
                 .as("lines of the panel's list of what it perceives").isEqualTo(perception.fruit().size()
                         + perception.objects().size() + perception.agents().size());
         server.resumeGame();
+    }
+
+    @Test
+    @Order(6)
+    void aModelThatDeclaresEntitiesIsRefusedAndAPlaceholderStandsIn() {
+        JsonNode drawn = browser.evaluate("orchard.model('Broken')");
+        assertThat(drawn.get("placeholder").asBoolean()).as("Broken drawn by the placeholder").isTrue();
+        assertThat(drawn.get("reason").asString()).contains("entities");
+        assertThat(browser.console()).anyMatch(line -> line.contains("agent Broken: its x3d model cannot be shown"));
     }
 
     private static List<String> strings(JsonNode array) {
