@@ -82,6 +82,11 @@ export class Agents {
         if (agent) {
             this.scene.remove(agent.root);
             this.byName.delete(name);
+            // Its geometries and materials are its own: their GPU buffers go with it.
+            agent.root.traverse(object => {
+                object.geometry?.dispose();
+                [object.material].flat().forEach(material => material?.dispose());
+            });
         }
     }
 
