@@ -120,7 +120,7 @@ export function readX3d(text) {
     }
     const reader = new Reader();
     const top = new SceneNode('Scene', null, 'Scene');
-    reader.children(scene, top, 1);
+    reader.children(scene, top, 0);
     reader.scene.roots = top.nodes('children');
     return reader.scene;
 }
