@@ -274,6 +274,26 @@ function frame(now) {
     requestAnimationFrame(frame);
 }
 
+// Clicking an agent selects it, as in the Java viewer; clicking elsewhere keeps the selection.
+canvas.onclick = event => {
+    const r = canvas.getBoundingClientRect();
+    const pointer = new THREE.Vector2((event.clientX - r.left) / r.width * 2 - 1, 1 - (event.clientY - r.top) / r.height * 2);
+    const raycaster = new THREE.Raycaster();
+    raycaster.setFromCamera(pointer, camera);
+    const roots = [...agents.byName.values()].map(agent => agent.root);
+    const hit = raycaster.intersectObjects(roots, true)[0];
+    if (hit) {
+        let object = hit.object;
+        while (object && !roots.includes(object)) {
+            object = object.parent;
+        }
+        const agent = [...agents.byName.values()].find(a => a.root === object);
+        if (agent) {
+            select(agent.name);
+        }
+    }
+};
+
 $('instruct').onsubmit = event => {
     event.preventDefault();
     const text = $('instruction').value.trim();

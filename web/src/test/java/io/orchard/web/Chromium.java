@@ -183,6 +183,13 @@ final class Chromium implements AutoCloseable {
         throw new AssertionError("the page did not come to " + expression + " within " + timeout.toSeconds() + " s");
     }
 
+    /** Clicks the left mouse button at a point of the page, in CSS pixels. */
+    void click(double x, double y) {
+        for (String type : List.of("mousePressed", "mouseReleased")) {
+            call("Input.dispatchMouseEvent", Map.of("type", type, "x", x, "y", y, "button", "left", "clickCount", 1));
+        }
+    }
+
     /** Types text into the element that has the focus, as a keyboard would. */
     void type(String text) {
         call("Input.insertText", Map.of("text", text));

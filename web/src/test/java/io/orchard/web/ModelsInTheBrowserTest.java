@@ -161,6 +161,23 @@ class ModelsInTheBrowserTest {
 
     @Test
     @Order(3)
+    void clickingAnAgentSelectsIt() throws Exception {
+        for (Model model : List.of(CRANE, HERON)) {
+            lookFromTheEast(model);
+            awaitFrame(shot -> near(shot, post(model), model.post()), model.name() + " in view");
+            double[] at = post(model);
+            browser.click(at[0], at[1]);
+            assertThat(browser.evaluate("document.getElementById('selected').textContent").asString())
+                    .as("the agent selected by clicking its post").isEqualTo(model.name());
+        }
+        // Clicking where no agent is selects no other.
+        browser.click(5, 150);
+        assertThat(browser.evaluate("document.getElementById('selected').textContent").asString())
+                .isEqualTo(HERON.name());
+    }
+
+    @Test
+    @Order(4)
     void aJointRotatedByTheServerTurnsInThePage() throws Exception {
         for (Model model : List.of(CRANE, HERON)) {
             lookFromTheEast(model);
@@ -176,7 +193,7 @@ class ModelsInTheBrowserTest {
     }
 
     @Test
-    @Order(4)
+    @Order(5)
     void aTimeSensorStartedByTheServerRunsThroughItsRoutes() throws Exception {
         awaitPhase(Phase.RUNNING);
         for (Model model : List.of(CRANE, HERON)) {
@@ -188,7 +205,7 @@ class ModelsInTheBrowserTest {
     }
 
     @Test
-    @Order(5)
+    @Order(6)
     void followingAnAgentDrawsItsViewConeAndWhatItPerceives() throws Exception {
         browser.evaluate("orchard.view(null)");
         browser.evaluate("orchard.follow('" + CRANE.name() + "')");
@@ -248,7 +265,7 @@ class ModelsInTheBrowserTest {
     }
 
     @Test
-    @Order(6)
+    @Order(7)
     void aModelThatDeclaresEntitiesIsRefusedAndAPlaceholderStandsIn() {
         JsonNode drawn = browser.evaluate("orchard.model('Broken')");
         assertThat(drawn.get("placeholder").asBoolean()).as("Broken drawn by the placeholder").isTrue();
