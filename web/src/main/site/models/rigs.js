@@ -41,12 +41,14 @@ class Unknown {
 }
 
 /**
- * A model moved as one object: walks and turns move its root, joints are its nodes of those
- * names, animations its glTF clips, played on the game's clock.
+ * A model moved as one object: walks and turns move its moving node (a glTF's node named after the
+ * agent, else its root), joints are its nodes of those names, animations its glTF clips, played on
+ * the game's clock.
  */
 export class SpatialRig {
-    constructor(agent, object, clips = []) {
+    constructor(agent, object, clips = [], moving = object) {
         this.object = object;
+        this.moving = moving;
         this.unknown = new Unknown(agent);
         this.tween = null;
         this.last = null;
@@ -55,11 +57,11 @@ export class SpatialRig {
     }
 
     moveTo(from, to, start, duration) {
-        this.tween = new MoveTween(from, to, start, duration, p => this.object.position.copy(p));
+        this.tween = new MoveTween(from, to, start, duration, p => this.moving.position.copy(p));
     }
 
     setRotation(q) {
-        this.object.quaternion.copy(q);
+        this.moving.quaternion.copy(q);
     }
 
     setJoint(name, q) {

@@ -207,6 +207,39 @@ class ModelReadersTest {
                 org.assertj.core.data.Offset.offset(1e-6));
     }
 
+    @Test
+    void aGltfModelIsFittedToItsBodyAndStoodOnTheGroundWhereItWalks() {
+        // One triangle, authored in centimetres a metre off the ground, under a node named after the agent.
+        java.nio.ByteBuffer points = java.nio.ByteBuffer.allocate(36).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+        for (float v : new float[] {-30, 100, -10, 40, 300, 10, 0, 250, 30}) {
+            points.putFloat(v);
+        }
+        String gltf = "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+                + "\"nodes\":[{\"name\":\"Tall\",\"translation\":[7,0,7],\"children\":[1]},{\"name\":\"Body\",\"mesh\":0}],"
+                + "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+                + "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+                + "\"min\":[-30,100,-10],\"max\":[40,300,30]}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+                + "\"buffers\":[{\"byteLength\":36,\"uri\":\"data:application/octet-stream;base64,"
+                + java.util.Base64.getEncoder().encodeToString(points.array()) + "\"}]}";
+        JsonNode bounds = browser.evaluate("(async () => {"
+                + " const THREE = await import('/vendor/three/build/three.module.js');"
+                + " const { loadGltf } = await import('/models/gltf.js');"
+                + " const bytes = new TextEncoder().encode(" + JSON.writeValueAsString(gltf) + ");"
+                + " const model = await loadGltf({ format: 'gltf', bytes: () => bytes }, { name: 'Tall', body: { height: 2 } });"
+                + " const at = new THREE.Vector3(3, 0, -4);"
+                + " model.rig.moveTo(at, at, 0, 0);"
+                + " model.rig.update(0);"
+                + " model.object.updateMatrixWorld(true);"
+                + " const box = new THREE.Box3().setFromObject(model.object);"
+                + " return [...box.min.toArray(), ...box.max.toArray()];"
+                + "})()");
+        double[] expected = {3 - 0.35, 0, -4 - 0.2, 3 + 0.35, 2, -4 + 0.2};
+        for (int i = 0; i < expected.length; i++) {
+            assertThat(bounds.get(i).asDouble()).as("bound %d of %s", i, bounds).isCloseTo(expected[i],
+                    org.assertj.core.data.Offset.offset(1e-4));
+        }
+    }
+
     private static java.util.List<String> strings(JsonNode array) {
         java.util.List<String> out = new java.util.ArrayList<>();
         array.forEach(node -> out.add(node.asString()));
