@@ -229,7 +229,8 @@ function showSeen(seen) {
         ...seen.objects.map(o => `${o.kind} ${o.id} at (${o.position.x.toFixed(0)}, ${o.position.z.toFixed(0)})`),
         ...seen.agents.map(a => `agent ${a.name}`),
     ] : [];
-    const text = lines.join('\n');
+    // Not following differs from following an agent that perceives nothing: the list is hidden.
+    const text = seen ? lines.join('\n') : null;
     if (text !== state.seen) {
         state.seen = text;
         $('seen').replaceChildren(...lines.map(line => Object.assign(document.createElement('li'), { textContent: line })));
