@@ -4,6 +4,7 @@ import io.orchard.viewer.model.FieldDef;
 import io.orchard.viewer.model.FieldType;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelException.Kind;
+import io.orchard.viewer.model.ModelFiles;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.NodeKind;
 import io.orchard.viewer.model.NodeSchema;
@@ -44,8 +45,10 @@ public final class VrmlParser {
     private final FieldReader reader;
     private final SceneDescription.Collector scene;
     private final Set<String> warned = new HashSet<>();
+    private final ModelFiles files;
 
-    private VrmlParser(String text, ModelLimits limits) {
+    private VrmlParser(String text, ModelLimits limits, ModelFiles files) {
+        this.files = files;
         this.tokens = new VrmlTokenizer(text);
         this.budget = new ParseBudget(limits);
         this.reader = new FieldReader(budget);
@@ -54,6 +57,15 @@ public final class VrmlParser {
 
     /** Parses a VRML97 file, checking it against {@code limits}; the bytes must be UTF-8. */
     public static SceneDescription parse(byte[] bytes, ModelLimits limits) throws ModelException {
+        return parse(bytes, limits, ModelFiles.none());
+    }
+
+    /**
+     * {@link #parse(byte[], ModelLimits)} for a file of a zip: an ImageTexture's url naming another
+     * file of the archive is read from it.
+     */
+    public static SceneDescription parse(byte[] bytes, ModelLimits limits, ModelFiles files)
+            throws ModelException {
         ParseBudget.checkSize(bytes, limits, "VRML97");
         String text = decode(bytes);
         if (text.startsWith("\uFEFF")) {
@@ -68,7 +80,7 @@ public final class VrmlParser {
             throw new ModelException(Kind.MALFORMED, "line 1: a VRML97 file starts with '"
                     + HEADER + "' but this one starts with '" + abbreviate(firstLine) + "'");
         }
-        return new VrmlParser(text, limits).scene();
+        return new VrmlParser(text, limits, files).scene();
     }
 
     private SceneDescription scene() throws ModelException {
@@ -185,6 +197,11 @@ public final class VrmlParser {
             node.set(def.name(), child);
         } else if (def.type() == FieldType.MFNODE) {
             node.set(def.name(), nodeList(node, def));
+        } else if (node.is("ImageTexture") && def.name().equals("url")) {
+            List<String> urls = ((List<?>) reader.readVrml(tokens, def, node)).stream()
+                    .map(String::valueOf).toList();
+            node.set(def.name(), files.embedded(urls, name.location() + ": " + node.label()
+                    + " field url"));
         } else {
             node.set(def.name(), reader.readVrml(tokens, def, node));
         }
