@@ -21,6 +21,7 @@ const files = [
     'examples/jsm/loaders/GLTFLoader.js',
     'examples/jsm/loaders/VRMLLoader.js',
     'examples/jsm/libs/chevrotain.module.min.js',
+    'examples/jsm/libs/fflate.module.js',
     'examples/jsm/utils/BufferGeometryUtils.js',
     'examples/jsm/utils/SkeletonUtils.js',
 ];

@@ -4,6 +4,7 @@
 import * as THREE from './vendor/three/build/three.module.js';
 import { GLTFLoader } from './vendor/three/examples/jsm/loaders/GLTFLoader.js';
 import { VRMLLoader } from './vendor/three/examples/jsm/loaders/VRMLLoader.js';
+import { loadZipped } from './zipmodel.js';
 
 const PALETTE = [0xe6194b, 0x4363d8, 0xf58231, 0x911eb4, 0x42d4f4, 0xf032e6, 0xffffff, 0x000075, 0x9a6324,
     0x800000];
@@ -43,6 +44,9 @@ async function load(model, body, colour) {
             const gltf = await new GLTFLoader().parseAsync(format === 'glb' ? data.buffer
                 : new TextDecoder().decode(data), '');
             return { object: gltf.scene, clips: gltf.animations };
+        }
+        if (format === 'zip') {
+            return await loadZipped(bytes(model.data));
         }
         if (format === 'vrml97') {
             return { object: new VRMLLoader().parse(new TextDecoder().decode(bytes(model.data)), ''), clips: [] };
