@@ -115,6 +115,11 @@ public final class BodyModels {
         };
     }
 
+    /** The colour of agent {@code agentName}: its placeholder's, and its marker's when it is far away. */
+    public static com.jme3.math.ColorRGBA colourOf(String agentName) {
+        return Placeholders.colorFor(agentName);
+    }
+
     private static BodyModel fromDescription(String agentName, ModelFormat format,
                                              SceneDescription scene, AssetManager assets,
                                              ModelLimits limits) throws ModelException {
