@@ -4,6 +4,7 @@ import com.jme3.app.Application;
 import com.jme3.app.SimpleApplication;
 import com.jme3.app.state.BaseAppState;
 import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
 import com.jme3.renderer.queue.RenderQueue.ShadowMode;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
@@ -51,6 +52,12 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
 
     /** Above this many agents, names are not shown until asked for. */
     public static final int MOST_LABELS = 30;
+
+    /**
+     * Figures that show fewer pixels tall are not drawn: {@link MarkersState} pins them, and a
+     * hundred of them far away would cost a thousand draw calls for a few pixels each.
+     */
+    static final int DRAWN_PX = 12;
 
 
     private final WorldMirror mirror;
@@ -220,14 +227,30 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         double now = clock.now();
         WorldSceneState world = getState(WorldSceneState.class);
         Node.CullHint shades = world != null && world.hasShadows() ? Node.CullHint.Always : Node.CullHint.Inherit;
+        Camera camera = getApplication().getCamera();
         for (Shown entry : shown.values()) {
-            if (entry.model != null) {
-                advance(entry, now);
-            }
             Vec3 feet = entry.agent.positionAt(now);
             entry.shade.setLocalTranslation((float) feet.x(), (float) feet.y() + 0.03f, (float) feet.z());
             entry.shade.setCullHint(shades);
+            if (entry.model != null) {
+                advance(entry, now);
+                // A figure a few pixels tall is a blur of a dozen draw calls: its pin shows the agent instead.
+                if (shownHeight(camera, feet, entry.agent.body().height()) < DRAWN_PX) {
+                    entry.model.root().setCullHint(Node.CullHint.Always);
+                    entry.shade.setCullHint(Node.CullHint.Always);
+                } else {
+                    entry.model.root().setCullHint(Node.CullHint.Inherit);
+                }
+            }
         }
+    }
+
+    /** How many pixels tall a body of {@code height} standing at {@code feet} shows; 0 when behind the camera. */
+    private static float shownHeight(Camera camera, Vec3 feet, double height) {
+        Vector3f low = camera.getScreenCoordinates(new Vector3f((float) feet.x(), (float) feet.y(), (float) feet.z()));
+        Vector3f high = camera.getScreenCoordinates(new Vector3f((float) feet.x(), (float) (feet.y() + height),
+                (float) feet.z()));
+        return low.z > 0 && low.z < 1 ? high.y - low.y : 0;
     }
 
     /** Advances a model; one that fails while animating is replaced by the placeholder, posed anew. */

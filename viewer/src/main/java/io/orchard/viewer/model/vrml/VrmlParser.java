@@ -46,9 +46,12 @@ public final class VrmlParser {
     private final SceneDescription.Collector scene;
     private final Set<String> warned = new HashSet<>();
     private final ModelFiles files;
+    private final VrmlProtos protos;
+    private int instancesOpen;
 
     private VrmlParser(String text, ModelLimits limits, ModelFiles files) {
         this.files = files;
+        this.protos = new VrmlProtos(limits.maxNodes());
         this.tokens = new VrmlTokenizer(text);
         this.budget = new ParseBudget(limits);
         this.reader = new FieldReader(budget);
@@ -104,7 +107,7 @@ public final class VrmlParser {
         if (token.isIdent("ROUTE")) {
             route();
         } else if (token.isIdent("PROTO")) {
-            skipProto();
+            protos.declare(tokens);
         } else if (token.isIdent("EXTERNPROTO")) {
             skipExternProto();
         } else {
@@ -141,7 +144,20 @@ public final class VrmlParser {
                     + ": expected a node (a type name and '{') but found " + found.quoted()
                     + (typeToken.is(Type.IDENT) ? " after '" + typeToken.text() + "'" : ""));
         }
+        if (protos.declares(typeToken.text())) {
+            if (++instancesOpen > VrmlProtos.MAX_NESTING) {
+                throw new ModelException(Kind.TOO_LARGE, typeToken.location() + ": PROTO instances nest deeper than "
+                        + VrmlProtos.MAX_NESTING + " (does a PROTO instantiate itself?)");
+            }
+            try {
+                protos.expand(typeToken, defName, tokens);
+                return nodeStatement();
+            } finally {
+                instancesOpen--;
+            }
+        }
         String where = typeToken.location();
+        protos.isExtern(typeToken.text(), where);
         budget.enter(where + ": " + typeToken.text());
         budget.addNodes(1, where + ": " + typeToken.text());
         tokens.next();
@@ -352,20 +368,12 @@ public final class VrmlParser {
         }
     }
 
-    private void skipProto() throws ModelException {
-        Token start = tokens.next();
-        String name = identifier("a name after PROTO");
-        LOG.warn("{}: PROTO {} is not supported; its instances are ignored", start.location(),
-                name);
-        skipBalanced(Type.OPEN_BRACKET, start);
-        skipBalanced(Type.OPEN_BRACE, start);
-    }
-
     private void skipExternProto() throws ModelException {
         Token start = tokens.next();
         String name = identifier("a name after EXTERNPROTO");
-        LOG.warn("{}: EXTERNPROTO {} is not supported (and never fetched); its instances are"
-                + " ignored", start.location(), name);
+        LOG.warn("{}: EXTERNPROTO {} is refused: its prototype is in another file, never fetched; its"
+                + " instances are not drawn", start.location(), name);
+        protos.extern(name, start.location());
         skipBalanced(Type.OPEN_BRACKET, start);
         if (tokens.peek().is(Type.OPEN_BRACKET)) {
             skipBalanced(Type.OPEN_BRACKET, start);
