@@ -21,6 +21,7 @@ const files = [
     'build/three.module.js',
     'build/three.core.js',
     'examples/jsm/loaders/GLTFLoader.js',
+    'examples/jsm/libs/fflate.module.js',
     'examples/jsm/utils/BufferGeometryUtils.js',
     'examples/jsm/utils/SkeletonUtils.js',
 ];

@@ -40,10 +40,13 @@ export function fit(root, agent, height) {
     return moving;
 }
 
-/** The model of an agent that registered a glTF (JSON, buffers embedded) or glb file. */
-export async function loadGltf(source, agent) {
+/**
+ * The model of an agent that registered a glTF (JSON, buffers embedded) or glb file; `manager`
+ * serves the files it refers to, when it came in a zip with them.
+ */
+export async function loadGltf(source, agent, manager = undefined) {
     const bytes = source.bytes();
-    const gltf = await new GLTFLoader().parseAsync(source.format === 'glb'
+    const gltf = await new GLTFLoader(manager).parseAsync(source.format === 'glb'
         ? bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) : new TextDecoder().decode(bytes), '');
     const moving = fit(gltf.scene, agent.name, agent.body.height);
     return { object: gltf.scene, rig: new SpatialRig(agent.name, gltf.scene, gltf.animations, moving) };

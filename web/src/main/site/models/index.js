@@ -6,6 +6,7 @@ import { loadGltf } from './gltf.js';
 import { placeholder } from './placeholder.js';
 import { loadVrml97 } from './vrml97.js';
 import { loadX3d } from './x3d.js';
+import { loadZip } from './zip.js';
 
 const FORMATS = new Map([
     ['gltf', loadGltf],
@@ -13,6 +14,7 @@ const FORMATS = new Map([
     ['x3d', loadX3d],
     ['vrml97', loadVrml97],
     ['bundled', loadBundled],
+    ['zip', loadZip],
 ]);
 
 function bytes(base64) {

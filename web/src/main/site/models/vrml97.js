@@ -1,7 +1,7 @@
 // VRML97 (the paper's VRML 2.0, UTF-8 encoding) read into the scene of nodes.js, the same scene
 // as X3D's: one builder and one event graph serve both formats. Fields of the nodes the page
 // builds are read by their types; other nodes are read through, so that their DEF names are
-// known, and not built. PROTOs are skipped, not expanded, as in the Java viewer.
+// known, and not built. PROTOs are skipped, not expanded (the Java viewer expands them).
 import {
     SceneDescription, SceneNode, ModelError, checkDepth, checkSize, coerce, fieldOf,
 } from './nodes.js';

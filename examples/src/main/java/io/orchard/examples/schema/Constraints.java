@@ -150,7 +150,8 @@ final class Constraints {
         if (record == ModelSpec.class && name.equals("data")) {
             property.put("maxLength", (ModelSpec.MAX_MODEL_BYTES + 2) / 3 * 4).put("pattern", BASE64_PATTERN)
                     .put("description", "The model file in Base64, at most " + ModelSpec.MAX_MODEL_BYTES
-                            + " bytes once decoded.");
+                            + " bytes once decoded; with format zip, a zip whose files also unpack to at most that"
+                            + " and that the server checks further (docs/protocol.md, 6.2).");
         } else if (PART_NAMES.contains(name)) {
             property.put("pattern", PART_NAME_PATTERN);
         } else if (NAMES.contains(name)) {

@@ -87,14 +87,16 @@ final class NettySession implements ClientSession {
     @Override
     public void send(ServerMessage message) {
         if (isOpen() && forms.sends(message)) {
-            batch.add(message);
+            batch.add(version < 2 && message instanceof AgentAddedMessage added ? added.forVersion1() : message);
         }
     }
 
     @Override
     public void send(EncodedLine line) {
         if (isOpen()) {
-            batch.add(line);
+            // A model of version 2 is written anew for a version 1 client, without what it does not know.
+            batch.add(version < 2 && line.message() instanceof AgentAddedMessage added
+                    && added.forVersion1() != added ? added.forVersion1() : line);
         }
     }
 
