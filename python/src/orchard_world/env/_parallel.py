@@ -122,7 +122,9 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
             self.world_seed = int(seed)
         else:
             self.world_seed = int(self._np_random.integers(1, 2 ** 31))
-        if self.address is None and (self._server is None or not self._server.alive()):
+        started = self._server is not None and self._server.alive() and all(
+            o.process.poll() is None for o in self._opponents)
+        if self.address is None and not started:  # none yet, or one of its processes ended: anew
             self._end_game()
             self._server = ServerProcess(seed=self.world_seed, time_limit=self.time_limit,
                                          wait_for=len(self.possible_agents) + len(self.opponents),

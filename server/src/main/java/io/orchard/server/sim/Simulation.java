@@ -1,7 +1,7 @@
 package io.orchard.server.sim;
 
-import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.ClientMessage;
@@ -19,8 +19,8 @@ import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.GameCommand;
-import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.GamePhase;
+import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
