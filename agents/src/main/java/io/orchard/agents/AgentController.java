@@ -132,6 +132,25 @@ public abstract class AgentController {
         loop.instruct(Checks.text(text, "instruction"));
     }
 
+    /**
+     * Stays connected once the game is over, for the next game that the server's operator may start
+     * ({@code GameControl restart}, docs/protocol.md 11.6): {@link #run} then returns the
+     * {@code GameOver} when the server says that game waits ({@link #nextGameWaits()}), or when it
+     * closes the connection. An agent plays one game: a new agent plays the next, as a new run of the
+     * program would. Call before {@code run}.
+     */
+    public final void stayForNextGame() {
+        loop.stayForNextGame();
+    }
+
+    /**
+     * Whether the server started another game after this agent's, for a new agent to play
+     * ({@link #stayForNextGame()}). Safe from any thread.
+     */
+    public final boolean nextGameWaits() {
+        return loop.nextGameWaits();
+    }
+
     /** Leaves the game: closes the connection, and {@link #run} returns. Safe from any thread. */
     public final void stop() {
         loop.stop();

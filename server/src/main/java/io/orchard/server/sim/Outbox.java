@@ -10,6 +10,7 @@ import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.Recorder.Audience;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -71,6 +72,11 @@ final class Outbox {
     void join(ClientSession session) {
         sessions.put(session.id(), session);
         (session.role() == Role.VIEWER ? viewers : agentClients).put(session.id(), session);
+    }
+
+    /** Every connected client, in the order they connected. */
+    List<ClientSession> clients() {
+        return List.copyOf(sessions.values());
     }
 
     /** Forgets a client; false if it was not connected. */
