@@ -205,10 +205,12 @@ public abstract class AgentController {
      * by the server. The default reads it with {@link #interpreter()} and hands a goal it
      * understood to {@link #onGoal}; it answers one for another agent ("Guppy, stop" heard by the
      * Robot) with who it was for, reads one it did not understand as the answer to a question it
-     * asked ("the nearer one") when it is one, and otherwise says the interpreter's helpful answer.
+     * asked ("the nearer one") when it is one, and otherwise says the interpreter's helpful answer. The
+     * sentence is read in what the agent spoke about or looked at last ({@link Errands#discourse()}), so
+     * that "that table" is the table it just named.
      */
     protected void onInstruction(String text, @Nullable String from) {
-        behaviours.heard(text, interpreter().interpret(text), this::onGoal);
+        behaviours.heard(text, interpreter().interpret(text, behaviours.discourse()), this::onGoal);
     }
 
     /**

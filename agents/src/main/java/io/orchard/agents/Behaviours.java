@@ -4,6 +4,7 @@ import io.orchard.agents.behaviour.Forager;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
+import io.orchard.agents.language.Discourse;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
@@ -106,6 +107,11 @@ final class Behaviours {
                         : notUnderstood.answer());
             }
         }
+    }
+
+    /** What the agent spoke about or looked at last; nothing before it is in the world. */
+    Discourse discourse() {
+        return situation.inWorld() ? errands().discourse() : Discourse.NONE;
     }
 
     /** Whether an instructed goal has the agent. */

@@ -40,6 +40,9 @@ final class Answering {
 
         /** The fruit the agent has collected, by kind. */
         Map<FruitKind, Integer> collected();
+
+        /** The rules in force, as the agent states them. */
+        String rules();
     }
 
     /** Fruit hangs in trees from this height up; below it lies on tables (or the ground). */
@@ -66,6 +69,7 @@ final class Answering {
                     + "wait and stop; and you can ask me what I see, where I am, what I have collected, what I'm "
                     + "doing and why, and where things are.";
             case HEADING -> "I'm facing " + compass(kit.motor.heading()) + ".";
+            case RULES -> state.rules();
         };
     }
 
@@ -76,6 +80,7 @@ final class Answering {
         List<KnownFruit> fruit = inSight();
         if (!fruit.isEmpty()) {
             KnownFruit nearest = fruit.get(0);
+            kit.mention(Known.fruit(nearest));
             parts.add(counted(fruit) + " (the nearest " + fruitWords(nearest) + ", "
                     + Grounder.bearingWords(here, nearest.ground()) + ")");
         }
@@ -121,6 +126,7 @@ final class Answering {
         double range = kit.memory.sight().range();
         Optional<Known> seen = known.stream().filter(k -> k.where().distance(here) <= range + k.size()).findFirst();
         if (seen.isPresent()) {
+            kit.mention(seen.get());
             return "Yes: " + Restated.thing(seen.get()) + ", " + Grounder.bearingWords(here, seen.get().where()) + ".";
         }
         return "No, not from here. " + whereIs(about);
@@ -186,7 +192,11 @@ final class Answering {
                     + " yet.";
         }
         List<Known> chosen = kit.grounder.select(about, fits);
+        if (chosen.isEmpty()) {
+            return "I don't know of " + about.words() + " yet.";
+        }
         Known first = chosen.get(0);
+        kit.mention(first);
         String at = Grounder.bearingWords(here, first.where());
         if (about.isFruit() && chosen.size() > 1) {
             return "I know of " + chosen.size() + "; the nearest is " + at + ", " + whereabouts(first.where()) + ".";

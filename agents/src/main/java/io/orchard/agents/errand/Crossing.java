@@ -7,6 +7,7 @@ import io.orchard.agents.map.RiverMap;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
 import java.util.Comparator;
+import java.util.Optional;
 
 /**
  * Crossing the river by a bridge: the bridge the person chose or named ("the nearest bridge"), else
@@ -63,6 +64,13 @@ final class Crossing implements Pursuit {
                 destination = pastB;
             } else {
                 destination = here.distance(pastA) >= here.distance(pastB) ? pastA : pastB;
+            }
+            kit.mention(new Known(Reference.Kind.BRIDGE, bridge.id(), bridge.middle(), bridge.length() / 2, null,
+                    bridge));
+            Optional<String> rule = kit.forbidden(destination);
+            if (rule.isPresent()) {
+                outcome = "I won't cross the river: that is against " + rule.get() + ".";
+                return Status.FAILED;
             }
         }
         Status status = kit.navigator.goTo(destination, 1.2);

@@ -4,8 +4,10 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.language.Collect;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.map.KnownFruit;
+import io.orchard.protocol.value.Gripper;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 
 /**
@@ -38,6 +40,16 @@ final class Gathering implements Pursuit {
         if (fruit == null) {
             fruit = choose();
             kit.navigator.reset();
+            if (fruit != null) {
+                kit.mention(Known.fruit(fruit));
+            }
+        }
+        if (fruit == null && collected == 0 && goal.what().id() != null) {
+            String why = cannot(goal.what().id());
+            if (why != null) {
+                outcome = why; // the very fruit meant, known, and out of reach or against a rule
+                return Status.FAILED;
+            }
         }
         if (fruit == null) {
             if (goal.isAll() && collected > 0) {
@@ -71,6 +83,22 @@ final class Gathering implements Pursuit {
     @Override
     public String outcome() {
         return outcome;
+    }
+
+    /** Why the agent cannot take the fruit of this id it knows of; null when it can, or does not know it. */
+    private String cannot(String id) {
+        KnownFruit known = kit.memory.fruit(id).orElse(null);
+        if (known == null) {
+            return null;
+        }
+        String thing = "the " + known.kind().wireName() + " " + id;
+        if (!kit.harvester.canReach(known)) {
+            Gripper gripper = kit.motor.body().gripper();
+            return String.format(Locale.ROOT, "I can't pick up %s: it is %.2f high, and my %s reaches only from %.2f to "
+                    + "%.2f.", thing, known.height(), gripper.part(), gripper.minHeight(), gripper.maxHeight());
+        }
+        return kit.memory.conduct().ruleAgainst(known).map(rule -> "I won't pick up " + thing + ": that is against "
+                + rule + ".").orElse(null);
     }
 
     /** The fruit to go for: one that fits the words now and that the gripper reaches. */

@@ -45,6 +45,12 @@ final class GoingTo implements Pursuit {
                 return status;
             }
             kit.navigator.reset();
+            kit.mention(target);
+            Optional<String> rule = target.kind() == Kind.AGENT ? Optional.empty() : kit.forbidden(target.where());
+            if (rule.isPresent()) {
+                outcome = "I won't go to " + Restated.thing(target) + ": that is against " + rule.get() + ".";
+                return Status.FAILED;
+            }
         }
         Point2 here = kit.here();
         Point2 where = whereNow();

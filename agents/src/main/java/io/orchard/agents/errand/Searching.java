@@ -25,6 +25,7 @@ final class Searching implements Pursuit {
         for (Known known : fits) {
             if (known.fruit() == null || known.fruit().seenTick() >= kit.memory.tick()) {
                 kit.standStill();
+                kit.mention(known);
                 outcome = "I see " + Restated.thing(known) + ", "
                         + Grounder.bearingWords(kit.here(), known.where()) + ".";
                 return Status.DONE;

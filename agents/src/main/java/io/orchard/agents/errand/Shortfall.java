@@ -53,7 +53,7 @@ final class Shortfall {
         if (kit.memory.river().water(p.x(), p.z(), kit.memory.radius())) {
             return "in the river";
         }
-        return null;
+        return kit.forbidden(p).map(rule -> "against " + rule).orElse(null);
     }
 
     private static Pursuit failed(String why) {

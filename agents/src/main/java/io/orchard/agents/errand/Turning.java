@@ -65,6 +65,7 @@ final class Turning implements Pursuit {
             Grounding grounding = kit.grounder.ground(target);
             Point2 here = kit.here();
             if (grounding instanceof Grounding.Found found) {
+                kit.mention(found.chosen());
                 heading = Bearings.headingTowards(here, found.chosen().where());
             } else if (grounding instanceof Grounding.Ambiguous ambiguous) {
                 heading = Bearings.headingTowards(here, ambiguous.choices().get(0).where());

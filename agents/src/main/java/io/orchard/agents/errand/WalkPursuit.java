@@ -4,6 +4,7 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.map.Bearings;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
+import java.util.Optional;
 
 /**
  * Walking to a point fixed when the pursuit starts: a few steps forward, back or aside, back to
@@ -62,6 +63,15 @@ final class WalkPursuit implements Pursuit {
             return kit.motor.walking() ? Status.RUNNING : finish(Status.DONE);
         }
         if (point != null) {
+            if (goal == null) {
+                goal = point;
+                Optional<String> rule = kit.forbidden(point);
+                if (rule.isPresent() && !kit.forbidden(here).isPresent()) {
+                    kit.standStill();
+                    outcome = "I won't go there: that is against " + rule.get() + ".";
+                    return Status.FAILED;
+                }
+            }
             Status status = kit.navigator.goTo(point, 0.8);
             return status == Status.RUNNING ? status : finish(status);
         }

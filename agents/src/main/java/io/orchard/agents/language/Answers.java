@@ -26,8 +26,9 @@ final class Answers {
             + "banana'.";
     static final String TOO_LONG = "That is too long for me; please give me one short instruction at a time, "
             + "for example 'go to the castle, then pick up a tomato'.";
-    static final String NEGATION = "Tell me what to do rather than what not to do; say 'stop' to make me stop, "
-            + "or 'carry on' to let me go on by myself.";
+    static final String NEGATION = "I can be told not to go somewhere ('don't go near the river') or not to take "
+            + "some fruit ('don't eat the tomatoes'); for anything else tell me what to do rather than what not to do, "
+            + "'stop' to make me stop, or 'carry on' to let me go on by myself.";
     static final String WHERE = "Where should I go? Say, for example, 'go to the castle', 'cross the bridge' or "
             + "'go north'.";
     static final String WHAT_PICK = "What should I pick up? Say, for example, 'pick up the nearest banana'.";
@@ -56,10 +57,31 @@ final class Answers {
     static final String WHOLE = "I can collect only whole fruit; say how many, for example 'collect two bananas'.";
     static final String NEGATIVE = "I can't do something a negative number of times; say how many, for example "
             + "'collect two bananas'.";
-    static final String RULES = "I can't keep a rule that lasts, such as 'only bananas from now on' or 'don't go "
-            + "near the river', yet; tell me what to do now instead, for example 'collect the bananas'.";
-    static final String CONDITIONS = "I can't wait for something to happen before I act, as in 'when you see a "
-            + "banana, take it', yet; tell me what to do now, for example 'look for a banana and pick it up'.";
+    static final String CAN_RULE = "I can keep rules until you lift them: where not to go ('don't go near the "
+            + "river', 'stay on this side of the river'), which fruit to leave or to take ('leave the coconuts', 'only "
+            + "bananas from now on'), and what to do when I see something ('when you see a banana, take it')";
+    static final String CAN_WATCH = "I can act when I see something, for example 'when you see a banana, take it' "
+            + "or 'if you see Roadrunner, follow him'";
+    static final String WHAT_WATCH = "What should I watch for? Say, for example, 'when you see a banana, take it'.";
+    static final String CONDITIONS = "I can act only when I see something, as in 'when you see a banana, take it' "
+            + "or 'if you find a coconut, bring it to me', and only by doing something (not by setting a rule or "
+            + "asking); I can't wait for anything else to happen.";
+    static final String LASTING = "I can keep from now on only rules: where not to go ('don't go near the river'), "
+            + "which fruit to leave or to take ('leave the coconuts', 'only bananas from now on'), and what to do "
+            + "when I see something ('when you see a banana, take it'); anything else, tell me to do now.";
+    static final String LIFT_WHAT = "I can lift a rule about where I may go or what I may take, for example 'you "
+            + "can go near the river again', 'you may take coconuts again', or all of them: 'forget the rules'.";
+    static final String RULES_HOW = "Ask me 'what are your rules?', lift them with 'forget the rules', or give me "
+            + "one, for example 'don't go near the river'.";
+    static final String ONLY_WHAT = "Which fruit should I take from now on? Say, for example, 'only bananas from "
+            + "now on' or 'only collect coconuts'.";
+    static final String LEAVE_WHAT = "What should I leave alone? I can leave fruit, for example 'leave the "
+            + "coconuts'.";
+    static final String AVOID_WHAT = "What should I keep away from? Say, for example, 'stay away from the river' "
+            + "or 'avoid the forest'.";
+    static final String ORDINAL_HOW = "I can count things by how near they are or from the left or the right, up "
+            + "to the " + Restatement.ordinal(Reference.MAX_ORDINAL) + "; say, for example, 'the second nearest tree' or "
+            + "'the third table from the left'.";
     static final String DEMONSTRATIVE = "I don't know which one you mean by '%s'; name it another way, for example "
             + "'the nearest table' or 'the table by the castle'.";
     static final String GENERIC_FAILURE = "Sorry, I could not make sense of that; " + CAN_DO + ".";
@@ -103,6 +125,10 @@ final class Answers {
         String second = reference == null || reference.isFruit() || reference.kind() == Reference.Kind.AGENT
                 ? "' or 'go to " + words : "' or 'look for " + words;
         return "What should I do with '" + words + "'? Say, for example, '" + first + words + second + "'.";
+    }
+
+    static String whatWhenSeen(String what) {
+        return "What should I do when I see " + what + "? Say, for example, 'when you see a banana, take it'.";
     }
 
     static String pronoun(String word, String question) {

@@ -71,8 +71,20 @@ public final class InstructionInterpreter implements Interpreter {
      */
     @Override
     public Interpretation interpret(String sentence) {
+        return interpret(sentence, Discourse.NONE);
+    }
+
+    /**
+     * What this sentence asks for, said to an agent that spoke of or looked at these things last: "that
+     * table" and "it" may mean one of them.
+     *
+     * @param sentence  an instruction in English; may be null, empty or anything else
+     * @param discourse what the agent spoke about last; {@link Discourse#NONE} for nothing
+     */
+    @Override
+    public Interpretation interpret(String sentence, Discourse discourse) {
         try {
-            return understand(sentence);
+            return understand(sentence, discourse == null ? Discourse.NONE : discourse);
         } catch (RuntimeException e) {
             LOG.warn("could not interpret '{}'", quote(sentence), e);
             return new NotUnderstood(Answers.GENERIC_FAILURE, List.of(), Optional.empty());
@@ -81,6 +93,10 @@ public final class InstructionInterpreter implements Interpreter {
 
     /** {@link #interpret} without its safety net, so that tests see any defect. */
     Interpretation understand(String sentence) {
+        return understand(sentence, Discourse.NONE);
+    }
+
+    private Interpretation understand(String sentence, Discourse discourse) {
         if (sentence == null || sentence.isBlank()) {
             return new NotUnderstood(Answers.EMPTY, List.of(), Optional.empty());
         }
@@ -102,11 +118,7 @@ public final class InstructionInterpreter implements Interpreter {
                 return asked;
             }
         }
-        String rule = Rules.answer(tokens);
-        if (rule != null) {
-            return new NotUnderstood(rule, List.of(), Optional.empty());
-        }
-        Interpretation heard = command(tokens, sentence);
+        Interpretation heard = command(tokens, sentence, discourse);
         if (heard instanceof NotUnderstood notUnderstood) {
             String language = Languages.other(tokens);
             if (language != null) {
@@ -139,9 +151,9 @@ public final class InstructionInterpreter implements Interpreter {
     }
 
     /** The sentence read as a command. */
-    private Interpretation command(List<Tokenizer.Token> tokens, String sentence) {
+    private Interpretation command(List<Tokenizer.Token> tokens, String sentence, Discourse discourse) {
         List<Lexeme> lexemes = lexicon.read(tokens);
-        Parser parser = new Parser(lexicon);
+        Parser parser = new Parser(lexicon, discourse);
         Goal goal = null;
         Refusal refusal = null;
         try {

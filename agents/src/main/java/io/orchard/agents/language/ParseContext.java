@@ -16,6 +16,18 @@ final class ParseContext {
     /** The agent the sentence is addressed to, or null. */
     String addressee;
 
+    /** Whether the sentence says its rule lasts: "from now on". */
+    boolean lasting;
+
+    /** Whether the sentence says "again": with {@link #permit}, it lifts a rule. */
+    boolean again;
+
+    /** Whether the sentence gives leave: "you can", "you may". */
+    boolean permit;
+
+    /** What the agent spoke about or looked at last, for "that table" and "it". */
+    Discourse discourse = Discourse.NONE;
+
     /** What the sentence last referred to, or null. */
     Reference antecedent;
 

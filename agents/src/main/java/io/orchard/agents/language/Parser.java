@@ -1,17 +1,23 @@
 package io.orchard.agents.language;
 
+import static io.orchard.agents.language.Lexeme.Cat.AGAIN;
+import static io.orchard.agents.language.Lexeme.Cat.COND;
 import static io.orchard.agents.language.Lexeme.Cat.DET;
 import static io.orchard.agents.language.Lexeme.Cat.DIR;
 import static io.orchard.agents.language.Lexeme.Cat.HERE;
+import static io.orchard.agents.language.Lexeme.Cat.LASTING;
 import static io.orchard.agents.language.Lexeme.Cat.ME;
 import static io.orchard.agents.language.Lexeme.Cat.NAME;
 import static io.orchard.agents.language.Lexeme.Cat.NEG;
 import static io.orchard.agents.language.Lexeme.Cat.NOUN;
 import static io.orchard.agents.language.Lexeme.Cat.NUMBER;
+import static io.orchard.agents.language.Lexeme.Cat.ONLY;
+import static io.orchard.agents.language.Lexeme.Cat.PERMIT;
 import static io.orchard.agents.language.Lexeme.Cat.PREP;
 import static io.orchard.agents.language.Lexeme.Cat.PRON;
 import static io.orchard.agents.language.Lexeme.Cat.PUNCT;
 import static io.orchard.agents.language.Lexeme.Cat.QUANT;
+import static io.orchard.agents.language.Lexeme.Cat.RULE;
 import static io.orchard.agents.language.Lexeme.Cat.SIDE;
 import static io.orchard.agents.language.Lexeme.Cat.UNIT;
 import static io.orchard.agents.language.Lexeme.Cat.UNKNOWN;
@@ -43,7 +49,13 @@ final class Parser {
     private final NounPhrases phrases = new NounPhrases(context);
 
     Parser(Lexicon lexicon) {
+        this(lexicon, Discourse.NONE);
+    }
+
+    /** A parser for one sentence said to an agent that spoke of these things last. */
+    Parser(Lexicon lexicon, Discourse discourse) {
         this.lexicon = lexicon;
+        this.context.discourse = discourse;
     }
 
     /** The positions of unknown words taken as agents' names. */
@@ -60,18 +72,44 @@ final class Parser {
     Goal parse(List<Lexeme> lexemes) {
         List<Lexeme> rest = new ArrayList<>(lexemes);
         takeLeadingAddress(rest);
+        takeMarkers(rest);
         List<Segment> segments = takeAddressSegments(Clauses.split(rest));
         if (segments.isEmpty()) {
             throw Refusal.answer(context.addressee != null ? Answers.YES : Answers.EMPTY);
         }
         segments = Clauses.withoutBareMotion(Clauses.ordered(segments));
+        Goal goal = goals(segments);
+        if (context.permit && context.again) {
+            return lifted(goal); // "you can go near the river again"
+        }
+        if (context.lasting && !standing(goal)) {
+            throw Refusal.answer(Answers.LASTING);
+        }
+        return goal;
+    }
+
+    /** "from now on", "again", "you can": said anywhere, they are about the whole sentence. */
+    private void takeMarkers(List<Lexeme> rest) {
+        for (Lexeme lexeme : rest) {
+            context.lasting |= lexeme.is(LASTING);
+            context.again |= lexeme.is(AGAIN);
+            context.permit |= lexeme.is(PERMIT);
+        }
+        rest.removeIf(lexeme -> lexeme.is(LASTING) || lexeme.is(AGAIN) || lexeme.is(PERMIT));
+    }
+
+    /** The goals of these clauses, in order; a condition takes the clauses after it as what it does. */
+    private Goal goals(List<Segment> segments) {
         List<Goal> goals = new ArrayList<>();
         List<Lexeme> prefix = List.of();
         for (int i = 0; i < segments.size(); i++) {
             List<Lexeme> tokens = segments.get(i).tokens();
             Lexeme first = tokens.get(0);
+            if (first.is(COND)) {
+                return condition(goals, segments, i);
+            }
             boolean unknownVerb = first.is(UNKNOWN) && !first.capitalised();
-            if (!first.is(VERB) && !first.is(NEG) && !unknownVerb && !prefix.isEmpty()) {
+            if (!first.is(VERB) && !first.is(NEG) && !first.is(ONLY) && !unknownVerb && !prefix.isEmpty()) {
                 // "then to the bridge" borrows only the verb of "walk to the castle"
                 List<Lexeme> borrowed = new ArrayList<>(first.is(PREP) ? prefix.subList(0, 1) : prefix);
                 borrowed.addAll(tokens);
@@ -89,6 +127,117 @@ final class Parser {
             throw Refusal.answer(Answers.EMPTY);
         }
         return Sequence.of(goals);
+    }
+
+    /**
+     * "when you see a banana, take it" (what it does after), or "take the bananas when you see them"
+     * (what it does before): a {@link WhenSee}. Other conditions ("when you are tired") are refused.
+     */
+    private Goal condition(List<Goal> before, List<Segment> segments, int at) {
+        List<Lexeme> tokens = segments.get(at).tokens();
+        if (!tokens.get(0).is(COND, "when-see")) {
+            throw Refusal.hint(Answers.CAN_WATCH); // "when you are tired": not something it sees
+        }
+        context.hint = Answers.CAN_WATCH;
+        context.question = Answers.WHAT_WATCH;
+        Cursor c = new Cursor(tokens.subList(1, tokens.size()));
+        if (c.atEnd()) {
+            throw Refusal.answer(Answers.WHAT_WATCH);
+        }
+        Phrase seen = phrases.phrase(c, true);
+        if (seen == null || seen.ref() == null || seen.ref().kind() == Kind.PLACE || seen.ref().kind() == Kind.START) {
+            throw Refusal.hint(Answers.CAN_WATCH);
+        }
+        Reference what = seen.ref().withDistance(null).withSize(seen.ref().size() == Reference.Size.LARGEST
+                || seen.ref().size() == Reference.Size.SMALLEST ? null : seen.ref().size());
+        if (!before.isEmpty()) {
+            if (!c.atEnd() || at + 1 < segments.size()) {
+                throw Refusal.hint(Answers.CAN_WATCH);
+            }
+            return watching(what, Sequence.of(before));
+        }
+        context.antecedent = what;
+        List<Segment> rest = new ArrayList<>();
+        if (!c.atEnd()) {
+            rest.add(new Segment(List.copyOf(c.rest()), false, Clauses.Marker.NONE));
+        }
+        rest.addAll(segments.subList(at + 1, segments.size()));
+        if (rest.isEmpty()) {
+            throw Refusal.answer(Answers.whatWhenSeen(Restatement.noun(what)));
+        }
+        return watching(what, goals(rest));
+    }
+
+    private static WhenSee watching(Reference what, Goal then) {
+        for (Goal step : then instanceof Sequence sequence ? sequence.steps() : List.of(then)) {
+            if (step instanceof Rule || step instanceof Lift || step instanceof Ask || step instanceof CarryOn) {
+                throw Refusal.answer(Answers.CONDITIONS);
+            }
+        }
+        return new WhenSee(what, then);
+    }
+
+    /** Whether every step of the goal is a rule or lifts one. */
+    private static boolean standing(Goal goal) {
+        for (Goal step : goal instanceof Sequence sequence ? sequence.steps() : List.of(goal)) {
+            if (!(step instanceof Rule || step instanceof Lift)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** "you can go near the river again", "you may take coconuts again": the rule that forbade it, lifted. */
+    private static Goal lifted(Goal goal) {
+        List<Goal> lifts = new ArrayList<>();
+        for (Goal step : goal instanceof Sequence sequence ? sequence.steps() : List.of(goal)) {
+            if (step instanceof Lift) {
+                lifts.add(step);
+                continue;
+            }
+            Rule rule = step instanceof Rule ? null : forbidding(step);
+            if (rule instanceof Avoid avoid) {
+                lifts.add(new Lift(avoid.area()));
+            } else if (rule instanceof Leave leave) {
+                lifts.add(new Lift(leave.what()));
+            } else {
+                throw Refusal.answer(Answers.LIFT_WHAT);
+            }
+        }
+        return Sequence.of(lifts);
+    }
+
+    /**
+     * The rule that forbids doing this goal, as "don't" makes of it: "don't go near the river" keeps
+     * the agent out of the area near the river, "don't eat the tomatoes" keeps it from tomatoes;
+     * null for a goal no rule can forbid ("don't follow Guppy").
+     */
+    private static Rule forbidding(Goal goal) {
+        if (goal instanceof GoTo goTo) {
+            Reference to = goTo.destination();
+            if (to.isFruit() || to.kind() == Kind.START) {
+                return null;
+            }
+            if (to.kind() == Kind.RIVER || to.kind() == Kind.AGENT) {
+                return new Avoid(Reference.place(Place.of(Relation.NEAR, to))); // the river is where near it starts
+            }
+            return new Avoid(to);
+        }
+        if (goal instanceof Cross cross) {
+            Reference landmark = cross.landmark();
+            return new Avoid(landmark.kind() == Kind.RIVER ? Reference.place(Place.of(Relation.BEYOND, landmark))
+                    : landmark);
+        }
+        if (goal instanceof Head head && head.distance() == null) {
+            return new Avoid(Reference.place(Place.of(Relation.of(head.direction()), null)));
+        }
+        if (goal instanceof Explore explore && explore.area() != null && !explore.area().isFruit()) {
+            return new Avoid(explore.area());
+        }
+        if (goal instanceof Collect collect) {
+            return new Leave(collect.what());
+        }
+        return null;
     }
 
     /** The reference these words make as one noun phrase ("the nearest banana"); null when they make none. */
@@ -179,7 +328,15 @@ final class Parser {
     private Goal command(Cursor c) {
         Lexeme t = c.peek();
         if (t.is(NEG)) {
-            throw Refusal.answer(Answers.NEGATION);
+            c.next();
+            return negated(c);
+        }
+        if (t.is(ONLY)) {
+            c.next();
+            return only(c);
+        }
+        if (t.is(COND)) {
+            throw Refusal.answer(Answers.CONDITIONS);
         }
         if (t.is(VERB)) {
             c.next();
@@ -198,10 +355,71 @@ final class Parser {
         }
         int start = c.position();
         Phrase phrase = phrases.phrase(c, false);
+        if (phrase != null && context.lasting && phrase.ref() != null && phrase.ref().isFruit()) {
+            return new Only(phrase.ref()); // "just tomatoes from now on"
+        }
         if (phrase != null) {
             throw Refusal.answer(Answers.whatToDoWith(c.rawSince(start), phrase.ref()));
         }
+        if (c.peek() != null && c.peek().is(RULE)) {
+            throw Refusal.answer(Answers.RULES_HOW);
+        }
         throw Refusal.hint(Answers.CAN_DO);
+    }
+
+    /**
+     * After "don't", "never", "no more": a rule against doing it ("don't go near the river", "never go
+     * into the forest", "don't eat the tomatoes", "no more coconuts"), or no rules at all ("no more
+     * rules"). What no rule can forbid is refused.
+     */
+    private Goal negated(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        while (c.peekIs(DET, "the") || c.peekIs(DET, "a")) {
+            c.next();
+        }
+        if (c.atEnd()) {
+            throw Refusal.answer(Answers.NEGATION);
+        }
+        if (c.peek().is(RULE)) {
+            c.next();
+            return Lift.all();
+        }
+        if (c.peek().is(VERB)) {
+            Goal goal = command(c);
+            Rule rule = forbidding(goal);
+            if (rule == null) {
+                throw Refusal.answer(Answers.NEGATION);
+            }
+            return rule;
+        }
+        Phrase phrase = phrases.phrase(c, false);
+        if (phrase != null && phrase.ref() != null && phrase.ref().isFruit()) {
+            return new Leave(phrase.ref()); // "no more coconuts"
+        }
+        throw Refusal.answer(Answers.NEGATION);
+    }
+
+    /** After "only": "only bananas (from now on)", "only collect bananas", "only the bananas on the tables". */
+    private Goal only(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        if (c.atEnd()) {
+            throw Refusal.answer(Answers.ONLY_WHAT);
+        }
+        if (c.peek().is(VERB)) {
+            Goal goal = command(c);
+            if (goal instanceof Collect collect) {
+                return collect.isAll() ? new Only(collect.what()) : collect; // "only pick up one banana"
+            }
+            if (goal instanceof Only) {
+                return goal;
+            }
+            throw Refusal.answer(Answers.ONLY_WHAT);
+        }
+        Phrase phrase = phrases.phrase(c, false);
+        if (phrase != null && phrase.ref() != null && phrase.ref().isFruit()) {
+            return new Only(phrase.ref());
+        }
+        throw Refusal.answer(Answers.ONLY_WHAT);
     }
 
     private Goal verb(String lemma, Cursor c) {
@@ -225,6 +443,10 @@ final class Parser {
             case "keep", "start" -> keep(c);
             case "do" -> doVerb(c);
             case "use" -> use(c);
+            case "leave" -> leave(c);
+            case "avoid" -> avoid(c);
+            case "forget" -> forget(c);
+            case "lift" -> liftRules(c);
             default -> throw Refusal.hint(Answers.CAN_DO);
         };
     }
@@ -246,7 +468,7 @@ final class Parser {
         Double first = distance(c);
         if (first != null) {
             if (c.atEnd()) {
-                throw Refusal.answer(Answers.DISTANCE_WHICH_WAY);
+                return new RelativeMove(RelativeMove.Direction.FORWARD, first); // "walk 10 metres": straight on
             }
             return walked(go(c, come), first); // "walk 5 metres north"
         }
@@ -535,8 +757,9 @@ final class Parser {
         if (lemma.equals("get") && c.peek() != null && c.peek().is(VERB)) {
             return continuing(c); // "get exploring"
         }
-        while (c.peekIs(PREP, "up") || (c.peek() != null && c.peek().is(ME))) {
-            c.next();
+        boolean only = false;
+        while (c.peekIs(PREP, "up") || (c.peek() != null && (c.peek().is(ME) || c.peek().is(ONLY)))) {
+            only |= c.next().is(ONLY); // "collect only bananas"
         }
         if (c.atEnd()) {
             if (lemma.equals("collect")) {
@@ -549,9 +772,11 @@ final class Parser {
             throw Refusal.hint(context.hint);
         }
         boolean back = false;
-        while (c.peekIs(PREP, "up") || c.peekIs(PREP, "back") || (c.peek() != null && c.peek().is(ME))
+        while (c.peekIs(PREP, "up") || c.peekIs(PREP, "back") || (c.peek() != null && (c.peek().is(ME)
+                || c.peek().is(ONLY)))
                 || (c.peekIs(PREP, "to") && c.peekAt(1) != null && (c.peekAt(1).is(ME) || c.peekAt(1).is(HERE, "here")))) {
-            Lexeme word = c.next(); // "pick the banana up", "bring it back", "bring them to me"
+            Lexeme word = c.next(); // "pick the banana up", "bring it back", "bring them to me", "bananas only"
+            only |= word.is(ONLY);
             if (word.is(PREP, "to")) {
                 c.next();
                 back = true;
@@ -574,7 +799,14 @@ final class Parser {
         }
         context.antecedent = what;
         context.lastCollected = what;
-        return new Collect(what, count(phrase));
+        Collect collect = new Collect(what, count(phrase));
+        if (only) {
+            if (!collect.isAll()) {
+                throw Refusal.answer(Answers.ONLY_WHAT);
+            }
+            return new Only(what);
+        }
+        return back ? Sequence.of(collect, new ComeBack()) : collect; // "if you find a banana, bring it to me"
     }
 
     private static int count(Phrase phrase) {
@@ -886,6 +1118,10 @@ final class Parser {
 
     private Goal stop(Cursor c) {
         context.hint = Answers.CAN_STOP;
+        Goal lift = rulesLifted(c);
+        if (lift != null) {
+            return lift; // "cancel the rules"
+        }
         if (c.peek() != null && c.peek().is(VERB)) {
             c.next(); // "stop following Guppy", "stop moving": whatever it was doing
             while (!c.atEnd() && !c.peek().is(UNKNOWN)) {
@@ -926,6 +1162,9 @@ final class Parser {
                 seconds = unitSeconds(c.next());
             } else if (t.is(UNIT)) {
                 seconds = unitSeconds(c.next());
+            } else if (before == null && t.is(PREP, "this-side") && seconds == Wait.UNTIL_TOLD) {
+                Reference anchor = phrases.place(c).anchor();
+                return new Avoid(Reference.place(Place.of(Relation.BEYOND, anchor))); // "stay on this side of the river"
             } else if (before == null && NounPhrases.isRelation(t) && !t.is(PREP, "on-ground")) {
                 before = new GoTo(Reference.place(phrases.place(c))); // "wait by the tree"
             } else {
@@ -1002,6 +1241,113 @@ final class Parser {
             return turn(c);
         }
         throw Refusal.hint(Answers.CAN_DO);
+    }
+
+    /** After leave, ignore, skip: "leave the coconuts (alone)"; "leave this side of the river" crosses it. */
+    private Goal leave(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        context.question = Answers.LEAVE_WHAT;
+        if (c.atEnd()) {
+            throw Refusal.answer(Answers.LEAVE_WHAT);
+        }
+        if (c.peekIs(PREP, "this-side")) {
+            Reference anchor = phrases.place(c).anchor();
+            return new Cross(anchor); // "leave this side of the river", which "don't" makes a rule
+        }
+        Phrase phrase = phrases.phrase(c, false);
+        if (phrase == null || phrase.ref() == null) {
+            throw Refusal.hint(context.hint);
+        }
+        if (!phrase.ref().isFruit()) {
+            throw Refusal.answer(Answers.LEAVE_WHAT);
+        }
+        context.antecedent = phrase.ref();
+        return new Leave(phrase.ref());
+    }
+
+    /**
+     * After avoid, stay away from, keep off: "avoid the forest", "stay away from the river" (near it),
+     * "avoid the coconuts" (leave them), "avoid going near the river".
+     */
+    private Goal avoid(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        if (c.atEnd()) {
+            throw Refusal.answer(Answers.AVOID_WHAT);
+        }
+        if (c.peek().is(VERB)) {
+            Rule rule = forbidding(command(c));
+            if (rule == null) {
+                throw Refusal.answer(Answers.NEGATION);
+            }
+            return rule;
+        }
+        boolean near = false;
+        if (c.peekIs(PREP, "near")) {
+            c.next();
+            near = true;
+        }
+        if (NounPhrases.isRelation(c.peek()) && !near) {
+            return new Avoid(Reference.place(phrases.place(c))); // "avoid the other side of the river"
+        }
+        Phrase phrase = phrases.phrase(c, true);
+        if (phrase == null || phrase.ref() == null) {
+            throw Refusal.hint(context.hint);
+        }
+        Reference what = phrase.ref();
+        if (what.isFruit()) {
+            return new Leave(what);
+        }
+        if (what.kind() == Kind.START) {
+            throw Refusal.answer(Answers.AVOID_WHAT);
+        }
+        if (what.kind() == Kind.PLACE) {
+            return new Avoid(what);
+        }
+        if (!near && (what.kind() == Kind.FOREST || what.kind() == Kind.BRIDGE)) {
+            return new Avoid(what); // "avoid the forest": keep out of it
+        }
+        return new Avoid(Reference.place(Place.of(Relation.NEAR, what)));
+    }
+
+    /** "forget the rules"; "forget the coconuts" leaves them. */
+    private Goal forget(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        while (c.peekIs(PREP, "around") || c.peekIs(PREP, "about")) {
+            c.next();
+        }
+        Goal lift = rulesLifted(c);
+        if (lift != null) {
+            return lift;
+        }
+        Phrase phrase = phrases.phrase(c, false);
+        if (phrase != null && phrase.ref() != null && phrase.ref().isFruit()) {
+            return new Leave(phrase.ref());
+        }
+        throw Refusal.hint(context.hint);
+    }
+
+    /** "lift the rules", "drop all the rules", "clear your restrictions". */
+    private Goal liftRules(Cursor c) {
+        context.hint = Answers.CAN_RULE;
+        Goal lift = rulesLifted(c);
+        if (lift == null) {
+            throw Refusal.hint(context.hint);
+        }
+        return lift;
+    }
+
+    /** "the rules", "all your rules", "every rule": every rule lifted; null (the cursor unmoved) otherwise. */
+    private static Goal rulesLifted(Cursor c) {
+        int start = c.position();
+        while (!c.atEnd() && (c.peek().is(DET) || c.peek().is(QUANT))) {
+            c.next();
+        }
+        if (c.peek() != null && c.peek().is(RULE)) {
+            c.next();
+            return Lift.all();
+        }
+        c.seek(start);
+        return null;
     }
 
     /** "use the bridge". */

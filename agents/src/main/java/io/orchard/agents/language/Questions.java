@@ -32,7 +32,7 @@ final class Questions {
             "would you tell me", "please tell me", "tell me", "i wonder", "i would like to know", "let me know",
             "do you know", "do you happen to know");
 
-    private static final List<String> SUFFIXES = List.of("please", "now", "right now", "so far", "yet", "do you know",
+    private static final List<String> SUFFIXES = List.of("please", "right now", "now", "so far", "yet", "do you know",
             "at the moment", "then", "again", "exactly", "today", "here", "at all");
 
     private static final Speller SPELLER;
@@ -61,6 +61,10 @@ final class Questions {
                 + "|stopped moving|stop there)|why (are|do|did) not you .*|why are you not .*|what went wrong"
                 + "|why did (that|it) (fail|not work)|what happened|why are you (standing|waiting)( still)?");
         frame(Topic.CAN, "what can you do|what do you understand|what can i (say|ask)");
+        frame(Topic.RULES, "what are (your|the) (rules|restrictions|conditions)|(what|which) rules (do you have|are you "
+                + "(following|keeping|obeying))|do you have any rules|what (rules )?(did|have) i (told|tell|given|give) "
+                + "you|what are you not allowed to do|what must you (avoid|not do)|(tell me|list) your rules|your rules"
+                + "|what rules do you follow|any rules");
         frame(Topic.WHERE_IS, "where (is|are) " + X);
         frame(Topic.WHERE_IS, "where " + X + " (is|are)");
         frame(Topic.WHERE_IS, "have you seen( any| some)? " + X);

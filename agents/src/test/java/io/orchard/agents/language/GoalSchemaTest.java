@@ -67,7 +67,10 @@ class GoalSchemaTest {
         "{\"goal\":\"head\",\"direction\":\"up\"}",
         "{\"goal\":\"move\",\"direction\":\"forward\",\"distance\":0}",
         "{\"goal\":\"ask\",\"topic\":\"the-weather\"}",
-        "{\"goal\":\"wait\",\"seconds\":-1}"})
+        "{\"goal\":\"wait\",\"seconds\":-1}",
+        "{\"goal\":\"leave\",\"what\":{\"kind\":\"tree\"}}",
+        "{\"goal\":\"when-see\",\"what\":{\"kind\":\"banana\"},\"then\":{\"goal\":\"lift\"}}",
+        "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"tree\",\"ordinal\":2}}"})
     void whatGoalJsonRefusesTheSchemaRefusesToo(String json) {
         assertThatThrownBy(() -> GoalJson.read(json)).isInstanceOf(IllegalArgumentException.class);
         assertThat(schema.validate(json, InputFormat.JSON)).as(json).isNotEmpty();
