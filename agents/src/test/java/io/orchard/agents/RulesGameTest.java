@@ -9,7 +9,6 @@ import io.orchard.agents.zoo.Dwarf;
 import io.orchard.agents.zoo.Guppy;
 import io.orchard.agents.zoo.Roadrunner;
 import io.orchard.agents.zoo.Robot;
-import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.Point2;
 import io.orchard.server.sim.GameListener;
@@ -221,8 +220,8 @@ class RulesGameTest {
         assertThat(pupil.said.get(0)).isEqualTo("From now on I won't go near the river.");
         assertThat(pupil.said).as("said").anyMatch(s -> s.equals("I won't go to the river: that is against your rule "
                 + "not to go near the river. Carrying on by myself."));
-        double nearest = pupil.track.stream().mapToDouble(this::toWater).min().orElseThrow();
-        assertThat(nearest).as("nearest it came to the water, from %.1f; said %s", toWater(start), pupil.said)
+        double nearest = pupil.track.stream().mapToDouble(p -> Places.toWater(world, p)).min().orElseThrow();
+        assertThat(nearest).as("nearest it came to the water, from %.1f; said %s", Places.toWater(world, start), pupil.said)
                 .isGreaterThan(7);
         assertThat(pupil.track.get(pupil.track.size() - 1).distance(start)).as("it kept foraging")
                 .isGreaterThan(5);
@@ -254,7 +253,7 @@ class RulesGameTest {
         String table = onTables.entrySet().stream().filter(e -> e.getValue() >= 2).map(Map.Entry::getKey).sorted()
                 .findFirst().orElseThrow(() -> new AssertionError("no table with two fruit in the world of the seed"));
         Point2 at = world.tables().stream().filter(t -> t.id().equals(table)).findFirst().orElseThrow().position();
-        Point2 start = freeNear(new Point2(at.x() + 4, at.z() + 4));
+        Point2 start = Places.freeNear(world, new Point2(at.x() + 4, at.z() + 4));
         Pupil pupil = new Pupil("Pupil");
         Eaten eaten = new Eaten();
         pupil.instruct("go to the nearest table and wait");
@@ -272,63 +271,17 @@ class RulesGameTest {
         assertThat(taken).as("taken").filteredOn(id -> table.equals(support.get(id))).hasSize(onTables.get(table));
     }
 
-    // ---- the world's geometry -------------------------------------------------------------------
-
-    /** How far a point is from the water's shore (not counting where the river leaves the world). */
-    private double toWater(Point2 p) {
-        List<Point2> outline = world.river().outline();
-        Bounds bounds = world.bounds();
-        double nearest = Double.MAX_VALUE;
-        for (int i = 0; i < outline.size(); i++) {
-            Point2 a = outline.get(i);
-            Point2 b = outline.get((i + 1) % outline.size());
-            if (onEdge(a, bounds) && onEdge(b, bounds)) {
-                continue;
-            }
-            nearest = Math.min(nearest, segmentDistance(p, a, b));
-        }
-        return world.river().contains(p) ? 0 : nearest;
-    }
-
-    private static boolean onEdge(Point2 p, Bounds bounds) {
-        return Math.abs(p.x() - bounds.minX()) < 1e-6 || Math.abs(p.x() - bounds.maxX()) < 1e-6
-                || Math.abs(p.z() - bounds.minZ()) < 1e-6 || Math.abs(p.z() - bounds.maxZ()) < 1e-6;
-    }
-
-    private static double segmentDistance(Point2 p, Point2 a, Point2 b) {
-        double dx = b.x() - a.x();
-        double dz = b.z() - a.z();
-        double lengthSq = dx * dx + dz * dz;
-        double t = lengthSq == 0 ? 0 : Math.max(0, Math.min(1, ((p.x() - a.x()) * dx + (p.z() - a.z()) * dz) / lengthSq));
-        return Math.hypot(a.x() + t * dx - p.x(), a.z() + t * dz - p.z());
-    }
-
     /** A free place about {@code distance} from the water, away from the bridges. */
     private Point2 nearTheRiver(double distance) {
         for (double x = -80; x <= 80; x += 4) {
             for (double z = -80; z <= 80; z += 2) {
                 Point2 p = new Point2(x, z);
-                double d = toWater(p);
-                if (Math.abs(d - distance) < 1 && world.checkPlace(p, 1.2).isFree()
+                if (Math.abs(Places.toWater(world, p) - distance) < 1 && world.checkPlace(p, 1.2).isFree()
                         && world.bridges().stream().allMatch(b -> b.entryA().distance(p) > 25)) {
                     return p;
                 }
             }
         }
         throw new IllegalStateException("no place " + distance + " from the river in the world of seed " + SEED);
-    }
-
-    /** A free place for the agent, as near {@code wanted} as there is one. */
-    private Point2 freeNear(Point2 wanted) {
-        for (int ring = 0; ring < 20; ring++) {
-            for (int k = 0; k < Math.max(1, ring * 8); k++) {
-                double angle = k * 2 * Math.PI / Math.max(1, ring * 8);
-                Point2 p = new Point2(wanted.x() + ring * Math.cos(angle), wanted.z() + ring * Math.sin(angle));
-                if (world.checkPlace(p, 1.2).isFree() && !world.river().contains(p)) {
-                    return p;
-                }
-            }
-        }
-        throw new IllegalStateException("no free place near " + wanted + " in the world of seed " + SEED);
     }
 }

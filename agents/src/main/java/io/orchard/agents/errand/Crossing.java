@@ -11,7 +11,8 @@ import java.util.Optional;
 
 /**
  * Crossing the river by a bridge: the bridge the person chose or named ("the nearest bridge"), else
- * the one of the shortest way. The agent walks over it to a point a few steps beyond its far end;
+ * the one of the shortest way. The agent walks onto it at its near end, and over it to a point a few
+ * steps beyond its far end;
  * the crossing is done when it stands on the other bank from the one it started on. A bridge not
  * yet known is looked for first.
  */
@@ -26,6 +27,8 @@ final class Crossing implements Pursuit {
     private KnownBridge bridge;
     private RiverMap.Side from;
     private Point2 destination;
+    private Point2 entry;
+    private boolean onto;
     private String outcome = "";
 
     Crossing(Kit kit, Reference landmark, @Nullable Known chosen) {
@@ -65,6 +68,7 @@ final class Crossing implements Pursuit {
             } else {
                 destination = here.distance(pastA) >= here.distance(pastB) ? pastA : pastB;
             }
+            entry = destination == pastA ? bridge.entryB() : bridge.entryA();
             kit.mention(new Known(Reference.Kind.BRIDGE, bridge.id(), bridge.middle(), bridge.length() / 2, null,
                     bridge));
             Optional<String> rule = kit.forbidden(destination);
@@ -72,6 +76,19 @@ final class Crossing implements Pursuit {
                 outcome = "I won't cross the river: that is against " + rule.get() + ".";
                 return Status.FAILED;
             }
+        }
+        if (!onto) {
+            // onto the deck first: the shortest way to the far bank may lead over the other bridge
+            Status toEntry = kit.navigator.goTo(entry, 1.5);
+            onto = toEntry == Status.DONE || bridge.covers(here, 0, 0.5);
+            if (toEntry == Status.FAILED) {
+                outcome = "I can't find a way onto the bridge " + bridge.id() + ".";
+                return Status.FAILED;
+            }
+            if (!onto) {
+                return Status.RUNNING;
+            }
+            kit.navigator.reset();
         }
         Status status = kit.navigator.goTo(destination, 1.2);
         if (status == Status.FAILED) {

@@ -17,8 +17,17 @@ public final class InstructionSets {
 
     /** Every sentence of both sets, without the expected goals. */
     public static List<String> sentences() throws IOException {
+        return sentences(List.of("/language/corpus.tsv", "/language/fresh.tsv"));
+    }
+
+    /** Every sentence of the fresh set, fresh.tsv, as a new user typed them. */
+    public static List<String> fresh() throws IOException {
+        return sentences(List.of("/language/fresh.tsv"));
+    }
+
+    private static List<String> sentences(List<String> sets) throws IOException {
         List<String> sentences = new ArrayList<>();
-        for (String set : List.of("/language/corpus.tsv", "/language/fresh.tsv")) {
+        for (String set : sets) {
             try (InputStream in = Objects.requireNonNull(InstructionSets.class.getResourceAsStream(set), set);
                  BufferedReader lines = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
                 for (String line = lines.readLine(); line != null; line = lines.readLine()) {
