@@ -40,6 +40,9 @@ final class AgentCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
@@ -67,6 +70,7 @@ final class AgentCommand implements Callable<Integer> {
         String name = this.name == null ? species.agentName() : this.name;
         AgentController agent = species.create(name);
         resumeTokens.keep(agent);
+        language.apply(agent);
         languageModel.apply(agent);
         agent.addSpeechListener(text -> out.println(name + ": " + text));
         AgentMain.listen(console, agent::instruct);

@@ -35,6 +35,9 @@ final class AgentsCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
@@ -56,7 +59,7 @@ final class AgentsCommand implements Callable<Integer> {
         for (Species species : Species.values()) {
             AgentController agent = species.create();
             resumeTokens.keep(agent);
-        languageModel.apply(agent);
+            language.apply(agent);
             languageModel.apply(agent);
             agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);

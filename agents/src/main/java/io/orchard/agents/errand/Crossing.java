@@ -73,7 +73,7 @@ final class Crossing implements Pursuit {
                     bridge));
             Optional<String> rule = kit.forbidden(destination);
             if (rule.isPresent()) {
-                outcome = "I won't cross the river: that is against " + rule.get() + ".";
+                outcome = kit.speech.wontCross(rule.get());
                 return Status.FAILED;
             }
         }
@@ -82,7 +82,7 @@ final class Crossing implements Pursuit {
             Status toEntry = kit.navigator.goTo(entry, 1.5);
             onto = toEntry == Status.DONE || bridge.covers(here, 0, 0.5);
             if (toEntry == Status.FAILED) {
-                outcome = "I can't find a way onto the bridge " + bridge.id() + ".";
+                outcome = kit.speech.noWayOnto(bridge.id());
                 return Status.FAILED;
             }
             if (!onto) {
@@ -92,14 +92,14 @@ final class Crossing implements Pursuit {
         }
         Status status = kit.navigator.goTo(destination, 1.2);
         if (status == Status.FAILED) {
-            outcome = "I can't find a way over the bridge " + bridge.id() + ".";
+            outcome = kit.speech.noWayOver(bridge.id());
             return status;
         }
         RiverMap.Side now = kit.grounder.side(here);
         if (status == Status.DONE || (from != null && now != from && now != RiverMap.Side.WATER
                 && now != RiverMap.Side.UNKNOWN && here.distance(bridge.middle()) > bridge.length() / 2 + 1)) {
             kit.standStill();
-            outcome = "I'm on the other side of the river, over the bridge " + bridge.id() + ".";
+            outcome = kit.speech.otherSide(bridge.id());
             return Status.DONE;
         }
         return Status.RUNNING;

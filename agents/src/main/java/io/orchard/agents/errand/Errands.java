@@ -16,6 +16,7 @@ import io.orchard.agents.language.Follow;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.GoTo;
 import io.orchard.agents.language.Head;
+import io.orchard.agents.language.Language;
 import io.orchard.agents.language.Lift;
 import io.orchard.agents.language.LookAt;
 import io.orchard.agents.language.LookFor;
@@ -36,6 +37,7 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 
 /**
@@ -74,8 +76,6 @@ public final class Errands {
 
     /** How long the agent waits for the answer to a question before it takes the nearest choice. */
     public static final double ANSWER_SECONDS = 30;
-
-    private static final String CARRYING_ON = " Carrying on by myself.";
 
     private final Kit kit;
     private final Deque<Goal> steps = new ArrayDeque<>();
@@ -147,7 +147,7 @@ public final class Errands {
     /** What the agent does for the person, in the words of its restatement ("going to the castle"); null when nothing. */
     private @Nullable String doing() {
         if (question != null) {
-            return "waiting for your answer: " + question.text();
+            return kit.speech.waitingForAnswer(question.text());
         }
         if (leaving != null) {
             return leaving;
@@ -155,8 +155,21 @@ public final class Errands {
         if (goal == null || pursuit == null || goal instanceof Stop) {
             return null;
         }
-        String restated = goal.restatement();
+        String restated = goal.restatement(kit.language);
         return Character.toLowerCase(restated.charAt(0)) + restated.substring(1, restated.length() - 1);
+    }
+
+    /**
+     * Answers in this language from now on, as the sentence just heard was in it: what the agent says
+     * back, says as it goes and answers to questions.
+     */
+    public void speak(Language language) {
+        kit.language = Objects.requireNonNull(language, "language");
+    }
+
+    /** The language the agent answers in. */
+    public Language language() {
+        return kit.language;
     }
 
     /** The harvester the errands collect with: set its gesture to animate the grasp. */
@@ -211,7 +224,8 @@ public final class Errands {
         if (!quiet) {
             return said;
         }
-        return said.startsWith(goal.restatement()) ? said.substring(goal.restatement().length()).strip() : said;
+        String restated = goal.restatement(kit.language);
+        return said.startsWith(restated) ? said.substring(restated.length()).strip() : said;
     }
 
     /** Starts a goal of the person's, or of a condition come true, in place of any other. */
@@ -228,7 +242,7 @@ public final class Errands {
         previousOrigin = origin;
         origin = kit.here();
         if (instructed instanceof CarryOn) {
-            kit.motor.say(instructed.restatement());
+            kit.motor.say(instructed.restatement(kit.language));
             return;
         }
         if (instructed instanceof Stop) {
@@ -241,7 +255,7 @@ public final class Errands {
         }
         String refused = refusal(steps.peek());
         if (refused == null && (standing(steps.peek()) || ambiguity(steps.peek()) == null)) {
-            kit.motor.say(instructed.restatement());
+            kit.motor.say(instructed.restatement(kit.language));
         }
         next();
     }
@@ -260,7 +274,7 @@ public final class Errands {
         if (picked.isEmpty()) {
             return false;
         }
-        resolve(picked.get(), "All right, " + Restated.thing(picked.get()) + ".");
+        resolve(picked.get(), kit.speech.allRight(picked.get()));
         return true;
     }
 
@@ -284,7 +298,7 @@ public final class Errands {
             Watching.Seen seen = rulebook.watching().next();
             if (seen != null) {
                 kit.mention(seen.thing());
-                kit.motor.say("I see " + Restated.thing(seen.thing()) + ", so as you told me:");
+                kit.motor.say(kit.speech.seenSoAsTold(seen.thing()));
                 start(seen.goal());
             }
         }
@@ -292,7 +306,7 @@ public final class Errands {
             kit.standStill();
             if (kit.motor.time() - askedAt >= ANSWER_SECONDS) {
                 Known nearest = question.read("1").orElseThrow();
-                resolve(nearest, "No answer: I'll take the nearest, " + Restated.thing(nearest) + ".");
+                resolve(nearest, kit.speech.noAnswer(nearest));
             }
             return true;
         }
@@ -310,7 +324,7 @@ public final class Errands {
         leaving = null;
         kit.navigator.reset();
         if (steps.isEmpty()) {
-            kit.motor.say(outcome + CARRYING_ON);
+            kit.motor.say(outcome + kit.speech.carryingOn());
         } else {
             if (!outcome.isEmpty()) {
                 kit.motor.say(outcome);
@@ -336,14 +350,14 @@ public final class Errands {
             String refused = refusal(step);
             if (refused != null) {
                 lastOutcome = refused;
-                kit.motor.say(refused + (steps.isEmpty() ? "" : " I'll go on with the rest."));
+                kit.motor.say(refused + (steps.isEmpty() ? "" : kit.speech.goOnWithTheRest()));
                 continue;
             }
             Reference asked = ambiguity(step);
             if (asked != null) {
                 Grounding grounding = kit.grounder.ground(asked);
                 question = new Question(step, asked.kind(), ((Grounding.Ambiguous) grounding).choices(), kit.memory,
-                        kit.grounder);
+                        kit.grounder, kit.speech);
                 askedAt = kit.motor.time();
                 goal = step;
                 kit.motor.say(question.text());
@@ -363,11 +377,11 @@ public final class Errands {
         if (rule.isEmpty() || out.isEmpty()) {
             return;
         }
-        leaving = "leaving the area " + rule.get() + " keeps me out of";
-        kit.motor.say("I'm where " + rule.get() + " keeps me out of; I'm leaving.");
+        leaving = kit.speech.leavingArea(rule.get());
+        kit.motor.say(kit.speech.imWhereRuleKeepsMeOut(rule.get()));
         stepsStarted = 0;
         steps.clear();
-        pursuit = WalkPursuit.to(kit, out.get(), "I'm out of it now.");
+        pursuit = WalkPursuit.to(kit, out.get(), kit.speech.outOfIt());
     }
 
     private void resolve(Known chosen, String said) {
@@ -382,8 +396,7 @@ public final class Errands {
     /** Why the body cannot do this goal at all, or the rules forbid it; null when it may. */
     private String refusal(Goal step) {
         if (step instanceof Collect collect) {
-            String unreachable = FruitHeights.refusal(collect.what(), kit.motor.body().gripper(),
-                    collect.what().words());
+            String unreachable = FruitHeights.refusal(collect.what(), kit.motor.body().gripper(), kit.speech);
             if (unreachable != null) {
                 return unreachable;
             }
@@ -412,7 +425,7 @@ public final class Errands {
         double heading = kit.motor.heading();
         if (step instanceof GoTo goTo) {
             if (goTo.destination().kind() == Reference.Kind.START) {
-                return WalkPursuit.to(kit, kit.grounder.start(), "I'm back where I started.");
+                return WalkPursuit.to(kit, kit.grounder.start(), kit.speech.backWhereStarted());
             }
             return goTo.destination().kind() == Reference.Kind.PLACE ? new GoingToPlace(kit, goTo.destination())
                     : new GoingTo(kit, goTo.destination(), chosen);
@@ -441,7 +454,7 @@ public final class Errands {
         }
         if (step instanceof ComeBack) {
             // after other steps of the same instruction, back to where it was given; else to where the one before was
-            return WalkPursuit.to(kit, stepsStarted > 1 ? origin : previousOrigin, "I'm back.");
+            return WalkPursuit.to(kit, stepsStarted > 1 ? origin : previousOrigin, kit.speech.back());
         }
         if (step instanceof Collect collect) {
             return new Gathering(kit, collect);
@@ -485,6 +498,6 @@ public final class Errands {
         Point2 here = kit.here();
         Point2 tree = found.chosen().where();
         Point2 beyond = Bearings.ahead(tree, Bearings.headingTowards(here, tree), Math.max(10, here.distance(tree)));
-        return WalkPursuit.to(kit, beyond, "Done: I went through the forest.");
+        return WalkPursuit.to(kit, beyond, kit.speech.throughTheForest());
     }
 }

@@ -4,10 +4,8 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.language.Collect;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.map.KnownFruit;
-import io.orchard.protocol.value.Gripper;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Set;
 
 /**
@@ -23,7 +21,6 @@ final class Gathering implements Pursuit {
     private final Looking looking;
     private KnownFruit fruit;
     private int collected;
-    private String last;
     private String outcome = "";
 
     Gathering(Kit kit, Collect goal) {
@@ -53,27 +50,26 @@ final class Gathering implements Pursuit {
         }
         if (fruit == null) {
             if (goal.isAll() && collected > 0) {
-                outcome = "Done: I collected " + collected + " and know of no more " + Restated.bare(goal.what()) + ".";
+                outcome = kit.speech.collectedAndNoMore(collected, goal.what());
                 return Status.DONE;
             }
             Status status = looking.step();
             if (status == Status.FAILED) {
-                outcome = collected > 0 ? "I collected " + collected + ", and found no more "
-                        + Restated.bare(goal.what()) + "." : looking.failure();
+                outcome = collected > 0 ? kit.speech.collectedAndFoundNoMore(collected, goal.what()) : looking.failure();
             }
             return status;
         }
         Status status = kit.harvester.collect(fruit);
         if (status == Status.DONE) {
             collected++;
-            last = fruit.kind().wireName() + " " + fruit.id();
+            KnownFruit taken = fruit;
             fruit = null;
             if (!goal.isAll() && collected >= goal.count()) {
-                outcome = collected == 1 ? "Done: I picked up the " + last + "."
-                        : "Done: I collected " + collected + ", the last the " + last + ".";
+                outcome = collected == 1 ? kit.speech.pickedUp(taken.kind(), taken.id())
+                        : kit.speech.collectedLast(collected, taken.kind(), taken.id());
                 return Status.DONE;
             }
-            kit.motor.say("Got the " + last + (goal.isAll() ? "." : "; " + (goal.count() - collected) + " to go."));
+            kit.motor.say(kit.speech.got(taken.kind(), taken.id(), goal.isAll() ? -1 : goal.count() - collected));
         } else if (status == Status.FAILED) {
             fruit = null; // out of reach after all: another one
         }
@@ -91,14 +87,10 @@ final class Gathering implements Pursuit {
         if (known == null) {
             return null;
         }
-        String thing = "the " + known.kind().wireName() + " " + id;
         if (!kit.harvester.canReach(known)) {
-            Gripper gripper = kit.motor.body().gripper();
-            return String.format(Locale.ROOT, "I can't pick up %s: it is %.2f high, and my %s reaches only from %.2f to "
-                    + "%.2f.", thing, known.height(), gripper.part(), gripper.minHeight(), gripper.maxHeight());
+            return kit.speech.tooHigh(known.kind(), id, known.height(), kit.motor.body().gripper());
         }
-        return kit.memory.conduct().ruleAgainst(known).map(rule -> "I won't pick up " + thing + ": that is against "
-                + rule + ".").orElse(null);
+        return kit.rule(known).map(rule -> kit.speech.wontPickUp(known.kind(), id, rule)).orElse(null);
     }
 
     /** The fruit to go for: one that fits the words now and that the gripper reaches. */

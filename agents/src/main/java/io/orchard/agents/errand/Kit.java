@@ -6,7 +6,10 @@ import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.Navigator;
 import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.language.Discourse;
+import io.orchard.agents.language.Language;
 import io.orchard.agents.language.Reference;
+import io.orchard.agents.language.Rule;
+import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Point2;
 import java.util.ArrayList;
@@ -23,6 +26,10 @@ final class Kit {
     final Harvester harvester;
     final Explorer explorer;
     final Grounder grounder;
+    /** The language the agent answers in: that of the last sentence it was told. */
+    Language language = Language.ENGLISH;
+    /** What the agent says, in that language. */
+    final Speech speech = new Speech(this);
     /** What the agent spoke about or looked at, most recent first. */
     private final List<Discourse.Mention> mentioned = new ArrayList<>();
     private static final int MENTIONS = 8;
@@ -55,9 +62,21 @@ final class Kit {
         return new Discourse(mentioned);
     }
 
-    /** The rule that keeps the agent out of this point, as a reason ("your rule not to go near the river"); empty when none. */
+    /**
+     * The rule that keeps the agent out of this point, as a reason in the language spoken ("your rule not
+     * to go near the river"); empty when none.
+     */
     Optional<String> forbidden(Point2 p) {
-        return memory.conduct().ruleAt(p);
+        return memory.conduct().ruleKeyAt(p).map(this::reason);
+    }
+
+    /** The rule that forbids taking this fruit, as a reason in the language spoken; empty when none. */
+    Optional<String> rule(KnownFruit fruit) {
+        return memory.conduct().ruleKeyAgainst(fruit).map(this::reason);
+    }
+
+    private String reason(Object rule) {
+        return rule instanceof Rule told ? told.reason(language) : String.valueOf(rule);
     }
 
     /** The nearest place the agent may stand that no rule keeps it out of, looking up to 60 units away; empty when none. */

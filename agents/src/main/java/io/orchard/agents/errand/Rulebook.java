@@ -61,14 +61,14 @@ final class Rulebook {
     /** Takes a rule on, in place of an {@link Only} for another: what the agent says. */
     String take(Rule rule) {
         if (rules.contains(rule)) {
-            return "I keep to that already: " + rule.statement() + ".";
+            return kit.speech.keepToThatAlready(rule.statement(kit.language));
         }
         String replaced = "";
         if (rule instanceof Only) {
             for (Rule old : List.copyOf(rules)) {
                 if (old instanceof Only) {
                     drop(old);
-                    replaced = " That takes the place of " + old.reason() + ".";
+                    replaced = kit.speech.takesThePlaceOf(old.reason(kit.language));
                 }
             }
         }
@@ -88,50 +88,49 @@ final class Rulebook {
             watching.watch(when, grounder);
         }
         String inside = rule instanceof Avoid && conduct.forbids(kit.here())
-                ? " I'm standing where it keeps me out of, so I'll leave first." : "";
-        return rule.restatement() + replaced + inside;
+                ? kit.speech.leaveFirst() : "";
+        return rule.restatement(kit.language) + replaced + inside;
     }
 
     /** Lifts the rules the words are about, or every rule: what the agent says. */
     String lift(Lift lift) {
         List<Rule> lifted = matching(lift.what());
         if (lifted.isEmpty()) {
-            return lift.what() == null ? "I have no rules to forget; I do as I see fit."
-                    : "I had no rule against that; I keep to the rules I have.";
+            return lift.what() == null ? kit.speech.noRulesToForget() : kit.speech.noRuleAgainstThat();
         }
         lifted.forEach(this::drop);
-        String said = lift.restatement();
+        String said = lift.restatement(kit.language);
         List<String> others = new ArrayList<>();
         if (lift.what() != null) {
             for (Rule rule : lifted) {
                 if (!saysTheSame(rule, lift.what())) {
-                    others.add(rule.reason());
+                    others.add(rule.reason(kit.language));
                 }
             }
         }
         if (others.isEmpty()) {
             return said;
         }
-        return said.substring(0, said.length() - 1) + "; that lifts " + String.join(" and ", others) + ".";
+        return said.substring(0, said.length() - 1) + kit.speech.thatLifts(others);
     }
 
     /** The rules in force, as the agent states them for "what are your rules?". */
     String statements() {
         if (rules.isEmpty()) {
-            return "I have no rules: I go where I like and take any fruit I can reach.";
+            return kit.speech.noRules();
         }
         List<String> said = new ArrayList<>();
         for (Rule rule : rules) {
-            said.add(rule.statement());
+            said.add(rule.statement(kit.language));
         }
-        return "My rules: " + String.join("; ", said) + ". Say 'forget the rules' to lift them.";
+        return kit.speech.rules(said);
     }
 
     /** Why the rules forbid this step outright, as the agent says it; null when they do not. */
     @Nullable String refusal(Goal step) {
         for (Rule rule : rules) {
             if (forbids(rule, step)) {
-                return "I won't: that is against " + rule.reason() + ". Say 'forget the rules' to lift your rules.";
+                return kit.speech.wontBreak(rule.reason(kit.language));
             }
         }
         return null;

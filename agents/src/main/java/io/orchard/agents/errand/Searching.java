@@ -26,13 +26,12 @@ final class Searching implements Pursuit {
             if (known.fruit() == null || known.fruit().seenTick() >= kit.memory.tick()) {
                 kit.standStill();
                 kit.mention(known);
-                outcome = "I see " + Restated.thing(known) + ", "
-                        + Grounder.bearingWords(kit.here(), known.where()) + ".";
+                outcome = kit.speech.iSee(known, kit.here());
                 return Status.DONE;
             }
         }
         if (kit.explorer.step(kit.navigator) == Status.DONE) {
-            outcome = "I have looked everywhere I can reach and found no " + Restated.bare(what) + ".";
+            outcome = kit.speech.lookedEverywhere(what);
             return Status.FAILED;
         }
         return Status.RUNNING;

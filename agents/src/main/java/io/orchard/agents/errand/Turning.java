@@ -73,12 +73,12 @@ final class Turning implements Pursuit {
                 kit.motor.turnTo(Bearings.normalise(kit.motor.heading() + LOOK_STEP));
                 return Status.RUNNING;
             } else {
-                outcome = "I looked all around and know of no " + Restated.bare(target) + ".";
+                outcome = kit.speech.lookedAllAround(target);
                 return Status.FAILED;
             }
         }
         kit.motor.turnTo(heading);
-        outcome = "Done: I'm facing " + compass(heading) + ".";
+        outcome = kit.speech.facing(compass(heading));
         return Status.DONE;
     }
 

@@ -48,6 +48,14 @@ public sealed interface Goal
     }
 
     /**
+     * The agent's restatement of this goal in a language it speaks: in German "Ich hebe die nächste
+     * Banane auf, die auf einem Tisch liegt."
+     */
+    default String restatement(Language language) {
+        return language == Language.GERMAN ? GermanRestatement.of(this) : Restatement.of(this);
+    }
+
+    /**
      * This goal in a compact text notation, one line, as the test corpus and logs write goals, e.g.
      * {@code collect(nearest banana on(table))} or {@code go-to(castle); collect(tomato)}. The
      * notation is described in {@code docs/instructions.md}; equal goals have equal notations.

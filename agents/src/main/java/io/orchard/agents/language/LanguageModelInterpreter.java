@@ -60,6 +60,11 @@ public final class LanguageModelInterpreter implements Interpreter {
         this.instructions = instructions();
     }
 
+    /** The interpreter it asks first, whose answers it keeps when they understand. */
+    public Interpreter grammar() {
+        return grammar;
+    }
+
     @Override
     public Interpretation interpret(String sentence) {
         return interpret(sentence, Discourse.NONE);

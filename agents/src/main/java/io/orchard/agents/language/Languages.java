@@ -41,11 +41,19 @@ final class Languages {
      * "another language" when two languages fit as well.
      */
     static String other(List<Tokenizer.Token> tokens) {
+        return other(tokens, List.of(Language.ENGLISH));
+    }
+
+    /** As {@link #other(List)}, for an interpreter that understands these languages: never one of them. */
+    static String other(List<Tokenizer.Token> tokens, List<Language> understood) {
         List<String> words = tokens.stream().filter(Tokenizer.Token::isWord).map(Tokenizer.Token::text).toList();
         String best = null;
         int most = 0;
         boolean tie = false;
         for (Map.Entry<String, Set<String>> language : MARKERS.entrySet()) {
+            if (understood.stream().anyMatch(known -> known.englishName().equals(language.getKey()))) {
+                continue;
+            }
             int count = (int) words.stream().filter(language.getValue()::contains).count();
             if (count > most) {
                 best = language.getKey();

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -39,8 +40,16 @@ final class Lexicon {
             "mind", "sure", "okay", "hello", "thanks", "cheers", "good", "nice", "fine", "hold", "hang",
             "able", "same", "whole", "single", "only", "exactly", "really", "still", "away", "about", "ones");
 
-    private static final Lexicon BASE = new Builder().build();
+    private static final Builder ENGLISH_WORDS = new Builder().build();
+    private static final GermanWords GERMAN_WORDS = new GermanWords().build();
 
+    private static final Lexicon BASE = new Lexicon(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases, PAPER_AGENTS,
+            Language.ENGLISH, known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()));
+
+    private static final Lexicon GERMAN = german();
+
+    private final Language language;
+    private final Set<String> foreign;
     private final Map<String, Entry> words;
     private final Map<String, List<String>> phrases;
     private final Set<String> phraseWords;
@@ -48,7 +57,13 @@ final class Lexicon {
     private final Speller speller;
     private final List<String> agentNames;
 
-    private Lexicon(Map<String, Entry> words, Map<String, List<String>> phrases, List<String> agentNames) {
+    /**
+     * @param foreign the words of the other language: no typo is corrected into a word of this language
+     *                when it is a word of that one
+     */
+    private Lexicon(Map<String, Entry> words, Map<String, List<String>> phrases, List<String> agentNames,
+                    Language language, Set<String> foreign) {
+        this.language = language;
         this.words = Map.copyOf(words);
         this.phrases = Map.copyOf(phrases);
         this.longestPhrase = phrases.keySet().stream().mapToInt(p -> p.split(" ").length).max().orElse(1);
@@ -69,15 +84,51 @@ final class Lexicon {
             }
         }
         this.speller = new Speller(meanings);
+        Set<String> others = new HashSet<>(foreign);
+        others.removeAll(words.keySet());
+        others.removeAll(phraseWords);
+        this.foreign = Set.copyOf(others);
     }
 
-    /** The vocabulary with the paper's agents and these names. */
-    static Lexicon withAgents(Collection<String> names) {
-        if (names.isEmpty()) {
-            return BASE;
+    /** Every word of a vocabulary, its own and those of its phrases. */
+    private static Set<String> known(Map<String, Entry> words, Map<String, List<String>> phrases) {
+        Set<String> known = new HashSet<>(words.keySet());
+        phrases.keySet().forEach(phrase -> known.addAll(Arrays.asList(phrase.split(" "))));
+        return known;
+    }
+
+    /**
+     * The German vocabulary: German words and phrases, and the grammar's own words its phrases are
+     * read as ("in der Nähe des" is {@code near the}).
+     */
+    private static Lexicon german() {
+        Map<String, Entry> words = new HashMap<>(GERMAN_WORDS.words());
+        for (List<String> meaning : GERMAN_WORDS.phrases().values()) {
+            for (String word : meaning) {
+                if (!words.containsKey(word) && !Character.isDigit(word.charAt(0))) {
+                    Entry english = ENGLISH_WORDS.words.get(word);
+                    if (english == null) {
+                        throw new IllegalStateException("a German phrase becomes unknown word '" + word + "'");
+                    }
+                    words.put(word, english);
+                }
+            }
         }
-        Map<String, Entry> words = new HashMap<>(BASE.words);
-        List<String> known = new ArrayList<>(BASE.agentNames);
+        for (String name : PAPER_AGENTS) {
+            words.putIfAbsent(name.toLowerCase(Locale.ROOT), new Entry(Cat.NAME, name, false));
+        }
+        return new Lexicon(words, GERMAN_WORDS.phrases(), PAPER_AGENTS, Language.GERMAN,
+                known(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases));
+    }
+
+    /** The vocabulary of this language with the paper's agents and these names. */
+    static Lexicon withAgents(Collection<String> names, Language language) {
+        Lexicon base = language == Language.GERMAN ? GERMAN : BASE;
+        if (names.isEmpty()) {
+            return base;
+        }
+        Map<String, Entry> words = new HashMap<>(base.words);
+        List<String> known = new ArrayList<>(base.agentNames);
         for (String name : names) {
             String key = Tokenizer.tokens(name).stream().filter(Token::isWord).map(Token::text)
                     .reduce("", String::concat);
@@ -89,7 +140,30 @@ final class Lexicon {
             }
             words.putIfAbsent(key, new Entry(Cat.NAME, name.strip(), false));
         }
-        return new Lexicon(words, BASE.phrases, known);
+        return new Lexicon(words, base.phrases, known, language, base == GERMAN ? known(ENGLISH_WORDS.words,
+                ENGLISH_WORDS.phrases) : known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()));
+    }
+
+    /** The language of this vocabulary. */
+    Language language() {
+        return language;
+    }
+
+    /** How many of these words are words of this vocabulary as written, not of the other language's too. */
+    int own(List<Token> tokens) {
+        int own = 0;
+        for (Token token : tokens) {
+            if (token.isWord() && isKnown(token.text()) && !shared(token.text())) {
+                own++;
+            }
+        }
+        return own;
+    }
+
+    /** Whether a word is a word of both languages ("stop", "halt", the agents' names). */
+    private boolean shared(String word) {
+        Lexicon other = this.language == Language.GERMAN ? BASE : GERMAN;
+        return other != null && other.isKnown(word);
     }
 
     /** The names of the agents this vocabulary knows, in the order they were given. */
@@ -117,8 +191,8 @@ final class Lexicon {
             Token token = tokens.get(i);
             String text = token.text();
             boolean corrected = false;
-            if (token.isWord() && !isKnown(text)) {
-                String correction = speller.correct(text);
+            if (token.isWord() && !isKnown(text) && !foreign.contains(text)) {
+                String correction = speller.correct(text); // never a word of the other language
                 if (correction != null) {
                     text = correction;
                     corrected = true;
@@ -249,7 +323,7 @@ final class Lexicon {
         private final Map<String, Entry> words = new LinkedHashMap<>();
         private final Map<String, List<String>> phrases = new LinkedHashMap<>();
 
-        Lexicon build() {
+        Builder build() {
             verbs();
             nouns();
             modifiers();
@@ -268,7 +342,7 @@ final class Lexicon {
                     }
                 }
             }
-            return new Lexicon(words, phrases, PAPER_AGENTS);
+            return this;
         }
 
         private void verbs() {

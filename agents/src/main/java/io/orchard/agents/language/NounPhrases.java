@@ -74,7 +74,7 @@ final class NounPhrases {
     }
 
     /** The parts of a noun phrase read so far. */
-    private static final class Parts {
+    private final class Parts {
 
         Double number;
         boolean all;
@@ -110,7 +110,7 @@ final class NounPhrases {
                         .withDistance(distance != null ? distance : ref.distance());
                 if (ordinal != null) {
                     if (ref.size() == Size.LARGEST || ref.size() == Size.SMALLEST) {
-                        throw Refusal.answer(Answers.ORDINAL_HOW);
+                        throw Refusal.answer(context.answers.ORDINAL_HOW);
                     }
                     ref = ref.withOrdinal(ordinal, ref.distance() != null ? ref.distance() : Distance.NEAREST);
                 }
@@ -194,24 +194,24 @@ final class NounPhrases {
             return null;
         }
         return context.discourse.last(kind).filter(m -> m.kind() == kind || kind == Kind.FRUIT)
-                .orElseThrow(() -> Refusal.answer(String.format(Answers.DEMONSTRATIVE, det.raw() + " " + next.raw())));
+                .orElseThrow(() -> Refusal.answer(String.format(context.answers.DEMONSTRATIVE, det.raw() + " " + next.raw())));
     }
 
     /** Whether a place picks out one object of those that fit: "the fruit closest to the bridge". */
-    private static boolean picked(Place place) {
+    private boolean picked(Place place) {
         return place != null && (place.relation() == Relation.CLOSEST_TO
                 || place.relation() == Relation.FARTHEST_FROM);
     }
 
     /** Sizes, distances, ordinals and a late number: "the nearest two big", "the second". */
-    private static void modifiers(Cursor c, Parts parts) {
+    private void modifiers(Cursor c, Parts parts) {
         while (!c.atEnd() && (c.peek().is(SIZE) || c.peek().is(DIST) || c.peek().is(ORD) || isSecond(c)
                 || (c.peek().is(NUMBER) && parts.number == null && !isHeadOne(c)))) {
             Lexeme t = c.next();
             if (t.is(ORD)) {
                 parts.ordinal = (int) Math.min(Integer.MAX_VALUE, t.number());
                 if (parts.ordinal < 1 || parts.ordinal > Reference.MAX_ORDINAL) {
-                    throw Refusal.answer(Answers.ORDINAL_HOW);
+                    throw Refusal.answer(context.answers.ORDINAL_HOW);
                 }
             } else if (t.is(UNIT, "second")) {
                 parts.ordinal = 2;
@@ -331,14 +331,14 @@ final class NounPhrases {
     }
 
     /** Whether the "second" at the cursor is an ordinal ("the second tree") rather than a unit of time. */
-    private static boolean isSecond(Cursor c) {
+    private boolean isSecond(Cursor c) {
         Lexeme next = c.peekAt(1);
         return c.peekIs(UNIT, "second") && next != null && (next.is(NOUN) || next.is(SIZE) || next.is(DIST)
                 || next.is(PRON, "one"));
     }
 
     /** Whether the "one" at the cursor is the head of its phrase ("the big one") rather than a count. */
-    private static boolean isHeadOne(Cursor c) {
+    private boolean isHeadOne(Cursor c) {
         Lexeme next = c.peekAt(1);
         return next == null || !(next.is(NOUN) || next.is(SIZE) || next.is(DIST) || next.is(PREP, "of")
                 || next.is(NAME));
@@ -359,14 +359,14 @@ final class NounPhrases {
         if (context.antecedent == null) {
             // nothing named in the sentence: what the agent spoke of last, fruit when fruit is wanted
             Optional<Discourse.Mention> spoken = word.is(PRON, "him") ? context.discourse.last(Kind.AGENT)
-                    : Answers.CAN_COLLECT.equals(context.hint) ? context.discourse.last(Kind.FRUIT)
+                    : context.answers.CAN_COLLECT.equals(context.hint) ? context.discourse.last(Kind.FRUIT)
                     : context.discourse.last();
             if (spoken.isPresent()) {
                 return spoken.get().reference();
             }
         }
         if (context.antecedent == null || (word.is(PRON, "him") && context.antecedent.kind() != Kind.AGENT)) {
-            throw Refusal.answer(Answers.pronoun(word.raw(), context.question));
+            throw Refusal.answer(context.answers.pronoun(word.raw(), context.question));
         }
         return context.antecedent;
     }

@@ -34,9 +34,12 @@ final class ParseContext {
     /** The fruit the sentence last asked to collect, or null. */
     Reference lastCollected;
 
+    /** The answers in the language of the sentence. */
+    Answers answers = Answers.ENGLISH;
+
     /** What the agent can do, to answer "I didn't understand ..." in the clause being read. */
-    String hint = Answers.CAN_DO;
+    String hint = Answers.ENGLISH.CAN_DO;
 
     /** What to ask when a pronoun in the clause being read refers to nothing. */
-    String question = Answers.WHAT_PICK;
+    String question = Answers.ENGLISH.WHAT_PICK;
 }

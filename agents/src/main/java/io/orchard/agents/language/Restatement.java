@@ -104,7 +104,7 @@ final class Restatement {
     }
 
     /** Where "go" leads, for an area: "near the river", "into the forest", "to the castle", "north of the castle". */
-    private static String where(Reference area) {
+    static String where(Reference area) {
         if (area.kind() == Kind.FOREST) {
             return "into " + noun(area);
         }
@@ -251,6 +251,11 @@ final class Restatement {
     private static boolean plural(Reference reference) {
         return reference.isFruit() && reference.distance() == null && reference.size() != Size.LARGEST
                 && reference.size() != Size.SMALLEST;
+    }
+
+    /** Every object of a reference, without an article: "coconuts that lie on a table". */
+    static String many(Reference reference) {
+        return phrase(reference, Collect.ALL, true);
     }
 
     /** One object of a reference, with its article: "a tree", "the castle", "the nearest banana on a table". */

@@ -25,4 +25,14 @@ public sealed interface Rule extends Goal permits Avoid, Leave, Only, WhenSee {
     default String reason() {
         return Restatement.reason(this);
     }
+
+    /** {@link #statement()} in a language the agents speak: in German "ich gehe nicht in die Nähe des Flusses". */
+    default String statement(Language language) {
+        return language == Language.GERMAN ? GermanRestatement.statement(this) : statement();
+    }
+
+    /** {@link #reason()} in a language the agents speak: in German "deine Regel: ich lasse die Kokosnüsse liegen". */
+    default String reason(Language language) {
+        return language == Language.GERMAN ? GermanRestatement.reason(this) : reason();
+    }
 }

@@ -104,6 +104,26 @@ public final class Conduct {
         return Optional.empty();
     }
 
+    /** What the first rule that keeps the agent out of this point was put here under; empty when none does. */
+    public Optional<Object> ruleKeyAt(Point2 p) {
+        for (PlaceRule rule : places) {
+            if (rule.area().test(p)) {
+                return Optional.of(rule.key());
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** What the first rule that forbids taking this fruit was put here under; empty when none does. */
+    public Optional<Object> ruleKeyAgainst(KnownFruit candidate) {
+        for (FruitRule rule : fruit) {
+            if (rule.forbids().test(candidate)) {
+                return Optional.of(rule.key());
+            }
+        }
+        return Optional.empty();
+    }
+
     /** Whether the rules let the agent take this fruit. */
     public boolean allows(KnownFruit candidate) {
         return ruleAgainst(candidate).isEmpty();

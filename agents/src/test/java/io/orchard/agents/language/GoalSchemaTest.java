@@ -51,7 +51,15 @@ class GoalSchemaTest {
                 goals++;
             }
         }
-        assertThat(goals).as("goals checked").isGreaterThan(300);
+        InstructionInterpreter german = new InstructionInterpreter(java.util.List.of(), Language.GERMAN);
+        for (String sentence : InstructionSets.german()) {
+            if (german.interpret(sentence) instanceof Interpretation.Understood understood) {
+                String json = GoalJson.write(understood.goal());
+                assertThat(schema.validate(json, InputFormat.JSON)).as("\"%s\" as %s", sentence, json).isEmpty();
+                goals++;
+            }
+        }
+        assertThat(goals).as("goals checked").isGreaterThan(400);
     }
 
     @ParameterizedTest
