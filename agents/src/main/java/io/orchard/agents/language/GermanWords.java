@@ -86,7 +86,7 @@ final class GermanWords {
         noun("place", "gegend bereich gebiet ort stelle umgebung seite", "gegenden");
         noun("world", "welt überall karte", "welten");
         noun("ground", "boden erde", "böden");
-        noun("start-point", "startpunkt ausgangspunkt anfang startplatz start", "startpunkte");
+        noun("start", "startpunkt ausgangspunkt anfang startplatz start", "startpunkte");
         for (String[] name : new String[][] {{"roboter", "Robot"}, {"zwerg", "Dwarf"}, {"hase", "Bunny"},
             {"hasen", "Bunny"}, {"kaninchen", "Bunny"}, {"rennkuckuck", "Roadrunner"}}) {
             put(name[0], Cat.NAME, name[1], false);

@@ -134,7 +134,18 @@ public final class InstructionInterpreter implements Interpreter {
         }
         Interpretation first = null;
         for (Lexicon lexicon : order) {
-            Interpretation heard = understand(sentence, tokens, discourse, lexicon);
+            Interpretation heard;
+            try {
+                heard = understand(sentence, tokens, discourse, lexicon);
+            } catch (RuntimeException e) {
+                if (order.size() == 1) {
+                    throw e;
+                }
+                // a defect in one language's reading must not keep the other from reading the sentence
+                LOG.warn("could not interpret '{}' in {}", quote(sentence), lexicon.language().englishName(), e);
+                heard = new NotUnderstood(Answers.of(lexicon.language()).GENERIC_FAILURE, List.of(), Optional.empty(),
+                        lexicon.language());
+            }
             if (heard instanceof Understood) {
                 return heard;
             }

@@ -44,12 +44,14 @@ final class Lexicon {
     private static final GermanWords GERMAN_WORDS = new GermanWords().build();
 
     private static final Lexicon BASE = new Lexicon(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases, PAPER_AGENTS,
-            Language.ENGLISH, known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()));
+            Language.ENGLISH, known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()), Set.of());
 
     private static final Lexicon GERMAN = german();
 
     private final Language language;
     private final Set<String> foreign;
+    /** The grammar's own words a vocabulary took from the English one for its phrases: not words of its language. */
+    private final Set<String> borrowed;
     private final Map<String, Entry> words;
     private final Map<String, List<String>> phrases;
     private final Set<String> phraseWords;
@@ -62,8 +64,9 @@ final class Lexicon {
      *                when it is a word of that one
      */
     private Lexicon(Map<String, Entry> words, Map<String, List<String>> phrases, List<String> agentNames,
-                    Language language, Set<String> foreign) {
+                    Language language, Set<String> foreign, Set<String> borrowed) {
         this.language = language;
+        this.borrowed = Set.copyOf(borrowed);
         this.words = Map.copyOf(words);
         this.phrases = Map.copyOf(phrases);
         this.longestPhrase = phrases.keySet().stream().mapToInt(p -> p.split(" ").length).max().orElse(1);
@@ -103,6 +106,7 @@ final class Lexicon {
      */
     private static Lexicon german() {
         Map<String, Entry> words = new HashMap<>(GERMAN_WORDS.words());
+        Set<String> borrowed = new HashSet<>();
         for (List<String> meaning : GERMAN_WORDS.phrases().values()) {
             for (String word : meaning) {
                 if (!words.containsKey(word) && !Character.isDigit(word.charAt(0))) {
@@ -111,6 +115,7 @@ final class Lexicon {
                         throw new IllegalStateException("a German phrase becomes unknown word '" + word + "'");
                     }
                     words.put(word, english);
+                    borrowed.add(word);
                 }
             }
         }
@@ -118,7 +123,7 @@ final class Lexicon {
             words.putIfAbsent(name.toLowerCase(Locale.ROOT), new Entry(Cat.NAME, name, false));
         }
         return new Lexicon(words, GERMAN_WORDS.phrases(), PAPER_AGENTS, Language.GERMAN,
-                known(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases));
+                known(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases), borrowed);
     }
 
     /** The vocabulary of this language with the paper's agents and these names. */
@@ -141,7 +146,7 @@ final class Lexicon {
             words.putIfAbsent(key, new Entry(Cat.NAME, name.strip(), false));
         }
         return new Lexicon(words, base.phrases, known, language, base == GERMAN ? known(ENGLISH_WORDS.words,
-                ENGLISH_WORDS.phrases) : known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()));
+                ENGLISH_WORDS.phrases) : known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()), base.borrowed);
     }
 
     /** The language of this vocabulary. */
@@ -149,21 +154,26 @@ final class Lexicon {
         return language;
     }
 
-    /** How many of these words are words of this vocabulary as written, not of the other language's too. */
+    /** How many of these words are words of this language as written, not of the other language's too. */
     int own(List<Token> tokens) {
         int own = 0;
         for (Token token : tokens) {
-            if (token.isWord() && isKnown(token.text()) && !shared(token.text())) {
+            if (token.isWord() && isNative(token.text()) && !shared(token.text())) {
                 own++;
             }
         }
         return own;
     }
 
+    /** Whether a word is a word of this language, not one of the grammar's it borrowed. */
+    private boolean isNative(String word) {
+        return isKnown(word) && !borrowed.contains(word);
+    }
+
     /** Whether a word is a word of both languages ("stop", "halt", the agents' names). */
     private boolean shared(String word) {
         Lexicon other = this.language == Language.GERMAN ? BASE : GERMAN;
-        return other != null && other.isKnown(word);
+        return other != null && other.isNative(word);
     }
 
     /** The names of the agents this vocabulary knows, in the order they were given. */

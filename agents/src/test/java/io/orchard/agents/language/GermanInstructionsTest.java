@@ -130,6 +130,30 @@ class GermanInstructionsTest {
     }
 
     @Test
+    void anAgentThatSpeaksGermanReadsEveryEnglishSentenceOfBothSetsAsAnAgentThatSpeaksOnlyEnglish()
+            throws IOException {
+        InstructionInterpreter english = new InstructionInterpreter();
+        Lexicon words = Lexicon.withAgents(List.of(), Language.ENGLISH);
+        List<String> differently = new ArrayList<>();
+        int read = 0;
+        for (String sentence : InstructionSets.sentences()) {
+            if (!(english.interpret(sentence) instanceof Understood alone)) {
+                continue; // refused in English: the German agent may understand it ("geh zum Schloss")
+            }
+            Interpretation both = INTERPRETER.interpret(sentence);
+            String twice = both instanceof Understood understood ? understood.goal().notation() : "refused";
+            // a sentence of words both languages share ("stop", "Guppy, halt") is the agent's own language's
+            boolean inEnglish = words.own(Tokenizer.tokens(sentence)) > 0;
+            if (!alone.goal().notation().equals(twice) || (inEnglish && both.language() != Language.ENGLISH)) {
+                differently.add(sentence + ": " + alone.goal().notation() + " / " + twice + " in " + both.language());
+            }
+            read++;
+        }
+        assertThat(read).isGreaterThan(400);
+        assertThat(differently).as("English sentences a German-speaking agent reads otherwise").isEmpty();
+    }
+
+    @Test
     void anAgentThatSpeaksOnlyEnglishAnswersGermanInEnglishAsBefore() {
         Interpretation heard = new InstructionInterpreter().interpret("nimm bitte die Banane");
 
