@@ -7,6 +7,7 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.zoo.Bunny;
 import io.orchard.agents.zoo.Dwarf;
 import io.orchard.agents.zoo.Guppy;
+import io.orchard.agents.zoo.Recording;
 import io.orchard.agents.zoo.Roadrunner;
 import io.orchard.agents.zoo.Robot;
 import io.orchard.protocol.value.FruitKind;
@@ -15,13 +16,16 @@ import io.orchard.server.sim.GameListener;
 import io.orchard.server.world.Bank;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Rules that hold until lifted, in real lockstep games: the agents' own foraging, planning and
@@ -35,6 +39,9 @@ class RulesGameTest {
     private static final int TICKS_PER_SECOND = 20;
 
     private final World world = WorldGenerator.standard(SEED).generate();
+
+    @TempDir
+    Path recordings;
 
     /** An agent with the default behaviour that notes where it stood, what it said and what it took. */
     static class Pupil extends AgentController {
@@ -206,6 +213,35 @@ class RulesGameTest {
         assertThat(taken).as("fruit the zoo took under its rules: %s", eaten.kinds).isGreaterThanOrEqualTo(8);
         assertThat(zoo.stream().filter(agent -> !eaten.by(agent.name()).isEmpty()).count())
                 .as("agents that took fruit: %s", eaten.kinds).isGreaterThanOrEqualTo(4);
+    }
+
+    @Test
+    void theZooStaysOnItsBankWhenToldToAndCrossesWhenNot() throws Exception {
+        Map<String, Bank> crossedTo = crossings(false);
+        Map<String, Bank> crossedUnderTheRule = crossings(true);
+
+        assertThat(crossedTo).as("agents of the zoo that crossed the river on their own").isNotEmpty();
+        assertThat(crossedUnderTheRule).as("agents of the zoo that crossed it told to stay on this side").isEmpty();
+    }
+
+    /** The agents of the zoo that stood on the other bank from their start within 60 s, with that bank. */
+    private Map<String, Bank> crossings(boolean ruled) throws Exception {
+        List<AgentController> zoo = List.of(new Dwarf(), new Robot(), new Bunny(), new Guppy(), new Roadrunner());
+        for (AgentController agent : zoo) {
+            if (ruled) {
+                agent.instruct("stay on this side of the river");
+            }
+        }
+        Path file = recordings.resolve(ruled ? "ruled.ndjson" : "free.ndjson");
+        Games.recorded(SEED, 60, zoo, (name, radius) -> null, new GameListener() { }, file);
+        Map<String, Bank> crossed = new HashMap<>();
+        for (AgentController agent : zoo) {
+            List<Recording.Tick> track = Recording.read(file, agent.name()).ticks();
+            Bank start = world.bankOf(track.get(0).at()).orElseThrow();
+            track.stream().map(tick -> world.bankOf(tick.at())).flatMap(Optional::stream)
+                    .filter(bank -> bank != start).findFirst().ifPresent(bank -> crossed.put(agent.name(), bank));
+        }
+        return crossed;
     }
 
     @Test
