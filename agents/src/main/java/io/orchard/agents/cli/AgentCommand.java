@@ -41,6 +41,9 @@ final class AgentCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
 
     @Mixin
@@ -91,6 +94,7 @@ final class AgentCommand implements Callable<Integer> {
     private AgentController agent(String name) {
         AgentController agent = species.create(name);
         resumeTokens.keep(agent);
+        language.apply(agent);
         languageModel.apply(agent);
         nextGames.apply(agent);
         agent.addSpeechListener(text -> out.println(name + ": " + text));

@@ -35,6 +35,9 @@ final class AgentsCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
 
     @Mixin
@@ -124,6 +127,7 @@ final class AgentsCommand implements Callable<Integer> {
     private AgentController agent(Species species) {
         AgentController agent = species.create();
         resumeTokens.keep(agent);
+        language.apply(agent);
         languageModel.apply(agent);
         nextGames.apply(agent);
         agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));

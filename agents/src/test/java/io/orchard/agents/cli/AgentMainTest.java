@@ -44,11 +44,12 @@ class AgentMainTest {
         void theHelpListsEveryOption() throws Exception {
             assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [OPTIONS]", "--type=TYPE",
                     "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--resume-tokens=FILE",
-                    "--language-model=URL", "--language-model-name=MODEL", "--language-model-timeout=SECONDS",
+                    "--language=CODE", "--language-model=URL", "--language-model-name=MODEL",
+                    "--language-model-timeout=SECONDS",
                     "(default: " + Path.of(System.getProperty("user.home"), ".orchard", "resume-tokens"), "--help");
             assertThat(AgentMain.agentHelp()).contains("--next-games");
             assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N",
-                    "--resume-tokens=FILE", "--next-games")
+                    "--resume-tokens=FILE", "--next-games", "--language=CODE")
                     .doesNotContain("--type");
             assertThat(AgentMain.agent(List.of("--help"), console(""), print(out), print(err))).isZero();
             assertThat(out()).contains("Usage: orchard agent");
@@ -66,6 +67,7 @@ class AgentMainTest {
             name no model   | agents | --language-model-name llama3.2 | orchard agents: --language-model-name needs --language-model URL
             model bad url   | agent  | --type bunny --language-model localhost:11434 --language-model-name m | orchard agent: invalid value for option '--language-model': 'localhost:11434' (expected an http or https address such as http://localhost:11434/v1)
             model timeout   | agents | --language-model http://h/v1 --language-model-name m --language-model-timeout 0 | orchard agents: invalid value for option '--language-model-timeout': '0.0' (expected seconds, more than 0 and at most 600)
+            language        | agent  | --type bunny --language fr | orchard agent: invalid value for option '--language': 'fr' (expected en or de)
             """)
         void wrongCommandLinesAreNamedAndExitWithTwo(String name, String command, String line, String message) {
             List<String> args = line == null ? List.of() : List.of(line.split(" "));
