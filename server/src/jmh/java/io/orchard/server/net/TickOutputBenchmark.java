@@ -6,7 +6,6 @@ import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.MoveMessage;
-import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.PerceptionRequestMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -19,6 +18,7 @@ import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.BodyLimits;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.EncodedLine;
+import io.orchard.server.sim.Percept;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
@@ -92,6 +92,11 @@ public class TickOutputBenchmark {
         }
 
         @Override
+        public void send(Percept percept) {
+            sent.add(percept);
+        }
+
+        @Override
         public void send(EncodedLine line) {
             sent.add(line);
         }
@@ -138,8 +143,8 @@ public class TickOutputBenchmark {
             sim.beginTick();
             for (int i = 0; i < agents; i++) {
                 Capture client = clients.get(i);
-                PerceptionMessage seen = (PerceptionMessage) client.sent.stream()
-                        .filter(PerceptionMessage.class::isInstance).findFirst().orElseThrow();
+                Percept seen = (Percept) client.sent.stream().filter(Percept.class::isInstance).findFirst()
+                        .orElseThrow();
                 Vec3 here = seen.position();
                 sim.received(client, new MoveMessage(++seq, "A" + i, here, Vec3.ground(
                         here.x() + random.nextDouble(-2, 2), here.z() + random.nextDouble(-2, 2))));
@@ -154,7 +159,7 @@ public class TickOutputBenchmark {
         for (Capture client : clients) {
             List<Object> batch = new ArrayList<>();
             for (Object message : client.sent) {
-                if (message instanceof EncodedLine || forms.sends((ServerMessage) message)) {
+                if (!(message instanceof ServerMessage plain) || forms.sends(plain)) {
                     batch.add(message);
                 }
             }

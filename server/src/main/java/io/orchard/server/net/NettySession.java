@@ -10,6 +10,7 @@ import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.EncodedLine;
+import io.orchard.server.sim.Percept;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -25,9 +26,10 @@ import org.slf4j.LoggerFactory;
  * often do), so a busy server makes fewer, larger writes. The data of an agent's
  * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
- * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
- * three messages of each perception, which the simulation sends one after the other, as one
- * {@code LeanPerception} line ({@link TickLines}), and no result for an accepted move unless it asked.
+ * tick nor grow the server's memory. A perception comes as a {@link Percept}, written on the I/O
+ * thread in the form the client reads ({@link ClientForms}): one {@code LeanPerception} line, or the
+ * ordinary form's three ({@link TickLines}); a lean client gets no result for an accepted move
+ * unless it asked.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -84,18 +86,24 @@ final class NettySession implements ClientSession {
         return version;
     }
 
+    // What is sent to a connection that has closed is dropped at the flush, which checks once for
+    // the whole batch rather than the channel's state for every message.
+
     @Override
     public void send(ServerMessage message) {
-        if (isOpen() && forms.sends(message)) {
+        if (forms.sends(message)) {
             batch.add(message);
         }
     }
 
     @Override
+    public void send(Percept percept) {
+        batch.add(percept);
+    }
+
+    @Override
     public void send(EncodedLine line) {
-        if (isOpen()) {
-            batch.add(line);
-        }
+        batch.add(line);
     }
 
     @Override

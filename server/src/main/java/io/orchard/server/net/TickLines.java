@@ -3,19 +3,17 @@ package io.orchard.server.net;
 import io.netty.buffer.ByteBuf;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
-import io.orchard.protocol.message.CastlePerceptionMessage;
-import io.orchard.protocol.message.LandmarkPerceptionMessage;
-import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.server.sim.EncodedLine;
+import io.orchard.server.sim.Percept;
 import java.util.List;
 
 /**
  * Encodes what one client is sent in a tick, one line after the other, into one buffer, in the
- * forms the client reads: a broadcast is copied from its shared bytes, a perception's three
- * messages become one lean line for a client that reads the lean form ({@link LeanLines}), the
- * lines that make most of the traffic are written directly ({@link FastLines}) and the rest by the
- * codec. It stops before an {@code AgentAdded} with a model's data, which its caller writes from the
+ * forms the client reads: a broadcast is copied from its shared bytes, a perception
+ * ({@link Percept}) becomes one lean line for a client that reads the lean form ({@link LeanLines})
+ * and its three messages for the others, the lines that make most of the traffic are written
+ * directly ({@link FastLines}) and the rest by the codec. It stops before an {@code AgentAdded} with a model's data, which its caller writes from the
  * copy every client shares. Stateless.
  */
 final class TickLines {
@@ -25,7 +23,7 @@ final class TickLines {
     private TickLines() {}
 
     /**
-     * Writes {@code messages} ({@link ServerMessage}s and {@link EncodedLine}s) from index
+     * Writes {@code messages} ({@link ServerMessage}s, {@link Percept}s and {@link EncodedLine}s) from index
      * {@code from} on, until the end or a message that {@link #carriesModel carries a model}.
      *
      * @return the index of the message it stopped at, or the number of messages
@@ -38,22 +36,29 @@ final class TickLines {
                     return i;
                 }
                 out.writeBytes(line.bytes());
-            } else if (forms.leanPerception() && message instanceof PerceptionMessage seen && i + 2 < messages.size()
-                    && messages.get(i + 1) instanceof LandmarkPerceptionMessage landmarks
-                    && messages.get(i + 2) instanceof CastlePerceptionMessage castle) {
-                LeanLines.write(seen, landmarks, castle, out);
-                i += 2;
+            } else if (message instanceof Percept percept) {
+                if (forms.leanPerception()) {
+                    LeanLines.write(percept, out);
+                } else {
+                    for (ServerMessage part : percept.messages()) {
+                        plain(part, out);
+                    }
+                }
             } else {
                 ServerMessage plain = (ServerMessage) message;
                 if (carriesModel(plain)) {
                     return i;
                 }
-                if (!FastLines.write(plain, out)) {
-                    out.writeBytes(CODEC.encodeLine(plain));
-                }
+                plain(plain, out);
             }
         }
         return messages.size();
+    }
+
+    private static void plain(ServerMessage message, ByteBuf out) {
+        if (!FastLines.write(message, out)) {
+            out.writeBytes(CODEC.encodeLine(message));
+        }
     }
 
     /** Whether the message is an {@code AgentAdded} whose model's data goes out from the shared copy. */

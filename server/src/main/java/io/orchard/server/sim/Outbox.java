@@ -115,6 +115,21 @@ final class Outbox {
         session.send(message);
     }
 
+    /** Sends a perception, recorded (when anything is) as its three messages. */
+    void send(ClientSession session, Percept percept) {
+        if (recording()) {
+            for (ServerMessage message : percept.messages()) {
+                record(Audience.CLIENT, session, message, null);
+            }
+        }
+        session.send(percept);
+    }
+
+    /** Whether what is sent is recorded: made into messages for the record, which costs for a perception. */
+    private boolean recording() {
+        return held != null || recorder != Recorder.NONE;
+    }
+
     /** Sends without recording: what a client is told only to catch up with what the record already holds. */
     void catchUp(ClientSession session, ServerMessage message) {
         session.send(message);
@@ -177,6 +192,9 @@ final class Outbox {
      * for a missed turn; else a message sent to the audience (to {@code client} alone for CLIENT).
      */
     private void record(Audience to, ClientSession client, Message message, MissedTurn missed) {
+        if (!recording()) {
+            return;
+        }
         String label = client == null ? null : label(client);
         if (held != null) {
             held.add(cause != null ? cause : client, cause != null ? label(cause) : label, tick, time, to, label,

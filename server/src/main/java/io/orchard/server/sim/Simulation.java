@@ -10,7 +10,6 @@ import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ScoreUpdateMessage;
-import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
@@ -173,9 +172,7 @@ public final class Simulation implements Inbox {
                 if (crowd == null) {
                     crowd = new AgentGrid(agents.values(), PERCEPTION_CELL);
                 }
-                for (ServerMessage perception : perceptions.of(agent, crowd, tick)) {
-                    outbox.send(agent.owner, perception);
-                }
+                outbox.send(agent.owner, perceptions.of(agent, crowd, tick));
                 agent.perceptionRequested = false;
                 if (agent.perceptionEvery > 0) {
                     agent.nextPerceptionTick = tick + agent.perceptionEvery;

@@ -84,6 +84,11 @@ final class FruitStore {
         return left;
     }
 
+    /** Every fruit, taken or not, in the order the world was made with. */
+    List<FruitState> allStates() {
+        return List.of(states);
+    }
+
     void visitWithin(double cx, double cz, double range, SightBox box, NearbyVisitor visitor) {
         double rangeSq = range * range;
         grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
@@ -92,7 +97,7 @@ final class FruitStore {
                 double dz = z[i] - cz;
                 double distanceSq = dx * dx + dz * dz;
                 if (distanceSq <= rangeSq) {
-                    visitor.fruit(states[i], x[i], z[i], Math.sqrt(distanceSq));
+                    visitor.fruit(i, states[i], x[i], z[i], Math.sqrt(distanceSq));
                 }
             }
         });
