@@ -2,7 +2,6 @@ package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
 import io.netty.buffer.Unpooled;
-import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.MoveMessage;
@@ -44,15 +43,13 @@ import org.openjdk.jmh.annotations.State;
  * {@code Tick} and its perception, in the ordinary form (six lines) or the lean one (three, or two
  * without the accepted move's result), each client's lines into one buffer. The messages are those
  * of a real tick of the benchmark world (1,000 × 1,000 units, 10,000 objects; sight 50, 120°).
- * {@link #viewerBroadcasts} is the share of the simulation's thread: the tick's {@code AgentMoved}
- * for viewers, encoded once for all of them.
+ * {@link #viewerBroadcasts} is the tick's {@code AgentMoved} for viewers, each encoded once for all
+ * of them (by the first network thread that writes it).
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 public class TickOutputBenchmark {
-
-    private static final MessageCodec CODEC = new MessageCodec();
 
     @Param({"1000"})
     int agents;
@@ -190,7 +187,7 @@ public class TickOutputBenchmark {
     public long viewerBroadcasts() {
         long bytes = 0;
         for (ServerMessage message : broadcasts) {
-            bytes += EncodedLine.of(CODEC, message).bytes().length;
+            bytes += new EncodedLine(message).bytes(TickLines::encode).length;
         }
         return bytes;
     }

@@ -2,6 +2,7 @@ package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.PerceptionMessage;
@@ -20,7 +21,8 @@ import tools.jackson.core.io.NumberOutput;
 import tools.jackson.databind.json.JsonMapper;
 
 /**
- * Writes the lines that make most of the traffic (perceptions, action results, ticks) straight
+ * Writes the lines that make most of the traffic (perceptions, action results, ticks, moves for
+ * viewers) straight
  * into a buffer, byte for byte as {@code MessageCodec} writes them. Perceptions carry numbers
  * rounded to thousandths, which are written as fixed-point digits instead of by the general
  * shortest-decimal algorithm: that, and skipping the mapper's reflection, cuts the cost of a
@@ -45,6 +47,15 @@ final class FastLines {
             integer(field(out, "tick"), m.tick());
             text(field(out, ",\"agent\""), m.agent());
             text(field(out, ",\"sector\""), m.sector().wireName());
+            end(out);
+        } else if (message instanceof AgentMovedMessage m) {
+            head(out, "AgentMoved");
+            integer(field(out, "tick"), m.tick());
+            text(field(out, ",\"agent\""), m.agent());
+            vec3(field(out, ",\"from\""), m.from());
+            vec3(field(out, ",\"to\""), m.to());
+            number(field(out, ",\"startTime\""), m.startTime());
+            number(field(out, ",\"duration\""), m.duration());
             end(out);
         } else if (message instanceof TickMessage m) {
             head(out, "Tick");

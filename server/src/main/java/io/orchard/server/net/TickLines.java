@@ -1,6 +1,8 @@
 package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
+import io.netty.buffer.Unpooled;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -35,7 +37,7 @@ final class TickLines {
                 if (carriesModel(line.message())) {
                     return i;
                 }
-                out.writeBytes(line.bytes());
+                out.writeBytes(line.bytes(TickLines::encode));
             } else if (message instanceof Percept percept) {
                 if (forms.leanPerception()) {
                     LeanLines.write(percept, out);
@@ -53,6 +55,15 @@ final class TickLines {
             }
         }
         return messages.size();
+    }
+
+    /** A broadcast's line, encoded once for every client that gets it. */
+    static byte[] encode(ServerMessage message) {
+        ByteBuf out = Unpooled.buffer(256);
+        if (!FastLines.write(message, out)) {
+            return CODEC.encodeLine(message);
+        }
+        return ByteBufUtil.getBytes(out);
     }
 
     private static void plain(ServerMessage message, ByteBuf out) {

@@ -1,6 +1,5 @@
 package io.orchard.server.sim;
 
-import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.Message;
@@ -29,9 +28,6 @@ import java.util.TreeMap;
  * ({@link HeldRecord}).
  */
 final class Outbox {
-
-    /** Immutable and costly to build: one for every simulation. */
-    private static final MessageCodec CODEC = new MessageCodec();
 
     private final Map<Long, ClientSession> sessions = new TreeMap<>();
     private final Map<Long, ClientSession> viewers = new TreeMap<>();
@@ -140,7 +136,7 @@ final class Outbox {
         record(null, session, null, missed);
     }
 
-    /** Sends to every client of the audience, encoding the message once for all of them. */
+    /** Sends to every client of the audience, encoded once for all of them (by the network thread that writes it first). */
     void broadcast(ServerMessage message, Audience audience) {
         record(audience, null, message, null);
         Map<Long, ClientSession> to = switch (audience) {
@@ -152,7 +148,7 @@ final class Outbox {
         if (to.isEmpty()) {
             return;
         }
-        EncodedLine line = EncodedLine.of(CODEC, message);
+        EncodedLine line = new EncodedLine(message);
         for (ClientSession session : to.values()) {
             session.send(line);
         }
