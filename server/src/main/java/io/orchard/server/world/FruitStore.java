@@ -91,13 +91,13 @@ final class FruitStore {
 
     void visitWithin(double cx, double cz, double range, SightBox box, NearbyVisitor visitor) {
         double rangeSq = range * range;
-        grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
+        grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), (i, atX, atZ) -> {
             if (present[i]) {
-                double dx = x[i] - cx;
-                double dz = z[i] - cz;
+                double dx = atX - cx;
+                double dz = atZ - cz;
                 double distanceSq = dx * dx + dz * dz;
                 if (distanceSq <= rangeSq) {
-                    visitor.fruit(i, states[i], x[i], z[i], Math.sqrt(distanceSq));
+                    visitor.fruit(i, states[i], atX, atZ, Math.sqrt(distanceSq));
                 }
             }
         });

@@ -289,15 +289,13 @@ public final class World {
         Checks.present(box, "box");
         Checks.present(visitor, "visitor");
         double rangeSq = range * range;
-        double[] obstacleX = obstacles.x;
-        double[] obstacleZ = obstacles.z;
         Obstacle[] records = obstacles.records;
-        obstacles.grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
-            double dx = obstacleX[i] - x;
-            double dz = obstacleZ[i] - z;
+        obstacles.grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), (i, atX, atZ) -> {
+            double dx = atX - x;
+            double dz = atZ - z;
             double distanceSq = dx * dx + dz * dz;
             if (distanceSq <= rangeSq) {
-                visitor.obstacle(i, records[i], obstacleX[i], obstacleZ[i], Math.sqrt(distanceSq));
+                visitor.obstacle(i, records[i], atX, atZ, Math.sqrt(distanceSq));
             }
         });
         fruit.visitWithin(x, z, range, box, visitor);
