@@ -15,7 +15,6 @@ import io.orchard.server.world.World;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.function.Consumer;
 
 /**
  * Computes what an agent perceives, as the paper has it: limited in range, in direction (the field
@@ -43,7 +42,7 @@ final class Perceptions {
     }
 
     /** What {@code agent} perceives at {@code tick}, finding others in {@code crowd}. */
-    Percept of(Agent agent, AgentGrid crowd, long tick) {
+    Percept of(Agent agent, CrowdGrid.Query crowd, long tick) {
         view.reset(agent);
         double range = agent.body.sight().range();
         SightBox box = SightBox.of(agent.position.x(), agent.position.z(), range, agent.heading,
@@ -85,7 +84,7 @@ final class Perceptions {
      * One agent's view: collects what the world's broad phase and the crowd offer and the cone
      * admits, as indices and rounded numbers in arrays kept from one view to the next.
      */
-    private final class View implements NearbyVisitor, Consumer<Agent> {
+    private final class View implements NearbyVisitor, CrowdGrid.Visitor {
 
         private Agent agent;
         private Point2 eye;
@@ -145,17 +144,19 @@ final class Perceptions {
             }
         }
 
-        /** Another agent the crowd offers. */
+        /** Another agent the crowd offers, standing at (x, z). */
         @Override
-        public void accept(Agent other) {
-            if (other != agent && sees(other.position.x(), other.position.z(), agent.position.groundDistance(other.position))) {
+        public void agent(Agent other, double x, double z) {
+            double dx = x - eyeX;
+            double dz = z - eyeZ;
+            if (other != agent && sees(x, z, Math.sqrt(dx * dx + dz * dz))) {
                 if (agentCount == agents.length) {
                     agents = Arrays.copyOf(agents, 2 * agents.length);
                     agentNumbers = Arrays.copyOf(agentNumbers, 4 * agents.length);
                 }
                 agents[agentCount] = other.name;
                 int at = 4 * agentCount;
-                place(agentNumbers, at, other.position.x(), other.position.z());
+                place(agentNumbers, at, x, z);
                 agentNumbers[at + 2] = Precision.angle(Angles.normalise(other.heading - agent.heading));
                 agentNumbers[at + 3] = other.body.radius();
                 agentCount++;

@@ -166,11 +166,11 @@ public final class Simulation implements Inbox {
             turns.began(agentSessions());
         }
         outbox.broadcast(new TickMessage(tick, outbox.time()), Audience.ALL);
-        AgentGrid crowd = null;
+        CrowdGrid.Query crowd = null;
         for (Agent agent : agents.values()) {
             if (agent.perceivesIn(tick)) {
                 if (crowd == null) {
-                    crowd = new AgentGrid(agents.values(), PERCEPTION_CELL);
+                    crowd = CrowdGrid.of(agents.values(), PERCEPTION_CELL);
                 }
                 outbox.send(agent.owner, perceptions.of(agent, crowd, tick));
                 agent.perceptionRequested = false;
