@@ -111,10 +111,11 @@ class LeanLinesTest {
      * Plays {@code ticks} ticks of {@code agents} agents that walk a few units a tick wherever the
      * world lets them, each perceiving every tick, and checks every perception; returns them.
      */
-    private static List<Percept> play(World world, int agents, double sight, int ticks) {
+    private static List<Percept> play(World world, int agents, Sight sight, int ticks) {
+        BodyLimits limits = new BodyLimits(0.2, 2.0, 4.0, 20.0, 2.5, 4.0, 500.0);
         Simulation sim = new Simulation(world, new SimulationConfig(20, ClockMode.LOCKSTEP, 1e6, 0,
-                Duration.ofSeconds(1), agents, BodyLimits.DEFAULT), 7, "test", Recorder.NONE, List.of());
-        Body body = new Body(0.5, 1.5, 10, new Gripper("hands", 0.6, 0, 1.5), new Sight(sight, Math.toRadians(120)));
+                Duration.ofSeconds(1), agents, limits), 7, "test", Recorder.NONE, List.of());
+        Body body = new Body(0.5, 1.5, 10, new Gripper("hands", 0.6, 0, 1.5), sight);
         List<Perceiving> clients = new ArrayList<>();
         long seq = 0;
         for (int i = 0; i < agents; i++) {
@@ -148,7 +149,7 @@ class LeanLinesTest {
 
     @Test
     void perceptionsOfTheBenchmarkWorldAreWrittenAsTheCodecWritesTheirLeanRecord() {
-        List<Percept> seen = play(WorldGenerator.benchmark(2026).generate(), 300, 50, 6);
+        List<Percept> seen = play(WorldGenerator.benchmark(2026).generate(), 300, new Sight(50, Math.toRadians(120)), 6);
 
         // Every part of a perception was written at least once.
         assertThat(seen).anyMatch(p -> p.objectCount() > 0).anyMatch(p -> p.agentCount() > 0)
@@ -156,6 +157,14 @@ class LeanLinesTest {
         assertThat(seen.stream().flatMap(p -> p.messages().stream())).anyMatch(m -> m instanceof PerceptionMessage p
                 && p.fruit().stream().anyMatch(f -> f.support() != null) && p.fruit().stream()
                 .anyMatch(f -> f.support() == null));
+    }
+
+    @Test
+    void aWideSightSeesMoreThanAViewFirstHasRoomForAndIsWrittenAsTheCodecWritesIt() {
+        List<Percept> seen = play(WorldGenerator.benchmark(2026).generate(), 100, new Sight(150, 2 * Math.PI), 2);
+
+        assertThat(seen).anyMatch(p -> p.objectCount() > 200).anyMatch(p -> p.fruitCount() > 40)
+                .anyMatch(p -> p.agentCount() > 12);
     }
 
     @Test
@@ -174,7 +183,7 @@ class LeanLinesTest {
                         new FruitState("F3", FruitKind.COCONUT, new Vec3(-11, 3, -4), "T\\1"),
                         new FruitState("F4", FruitKind.TOMATO, new Vec3(-20, 0.15, -20), null))));
 
-        List<Percept> seen = play(world, 12, 40, 20);
+        List<Percept> seen = play(world, 12, new Sight(40, Math.toRadians(120)), 20);
 
         assertThat(seen).anyMatch(p -> p.river() != null).anyMatch(p -> !p.bridges().isEmpty())
                 .anyMatch(p -> p.fruitCount() > 0).anyMatch(p -> p.objectCount() > 0);
