@@ -1,8 +1,6 @@
 package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
-import io.netty.buffer.Unpooled;
-import io.netty.util.concurrent.FastThreadLocal;
 import io.orchard.protocol.value.LeanUnits;
 import io.orchard.protocol.value.Obstacle;
 import io.orchard.protocol.value.PerceivedBridge;
@@ -12,7 +10,6 @@ import io.orchard.protocol.value.RelativePosition;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.Perceivables;
 import io.orchard.server.sim.Percept;
-import java.util.Arrays;
 import java.util.List;
 
 /**
@@ -21,25 +18,23 @@ import java.util.List;
  * a whole number of centimetres or milliradians, converted by {@link LeanUnits} as the record does,
  * so there is no decimal to format and no record to build. What never changes about a tree, table
  * or fruit (its id, kind and size; a fruit's place) is encoded once per world ({@link Tuples}) and
- * copied, so a thing seen costs a copy and two numbers. The line is built in an array of the
- * writing thread and handed to the buffer at once.
+ * copied, so a thing seen costs a copy and two numbers. The line is built in an array
+ * ({@link LineBytes}).
  */
 final class LeanLines {
 
-    private static final FastThreadLocal<Line> LINE = new FastThreadLocal<>() {
-        @Override
-        protected Line initialValue() {
-            return new Line();
-        }
-    };
-
     private LeanLines() {}
 
-    /** Writes the perception's lean line, newline included. */
+    /** Writes the perception's lean line into a buffer, as {@link #write(Percept, LineBytes)}. */
     static void write(Percept seen, ByteBuf out) {
+        LineBytes line = new LineBytes(4096);
+        write(seen, line);
+        line.writeTo(out);
+    }
+
+    /** Writes the perception's lean line, newline included. */
+    static void write(Percept seen, LineBytes line) {
         Tuples tuples = seen.things().derived(Tuples.class, Tuples::new);
-        Line line = LINE.get();
-        line.size = 0;
         line.ascii("{\"type\":\"LeanPerception\",\"tick\":");
         line.integer(seen.tick());
         line.ascii(",\"agent\":");
@@ -109,15 +104,14 @@ final class LeanLines {
         line.ascii("],\"castle\":\"");
         line.ascii(seen.castle().wireName());
         line.ascii("\"}\n");
-        out.writeBytes(line.bytes, 0, line.size);
     }
 
     /** A distance and a bearing as two elements of a tuple. */
-    private static void relative(Line line, RelativePosition at) {
+    private static void relative(LineBytes line, RelativePosition at) {
         relative(line, at.distance(), at.bearing());
     }
 
-    private static void relative(Line line, double distance, double bearing) {
+    private static void relative(LineBytes line, double distance, double bearing) {
         line.integer(LeanUnits.centimetres(distance));
         line.put(',');
         line.integer((int) LeanUnits.milliradians(bearing));
@@ -140,31 +134,31 @@ final class LeanLines {
         final int[] fruitStart;
 
         Tuples(Perceivables things) {
-            Line line = new Line();
+            LineBytes line = new LineBytes(1 << 16);
             objectStart = new int[things.obstacles() + 1];
             objectSplit = new int[things.obstacles()];
             for (int i = 0; i < things.obstacles(); i++) {
                 Obstacle o = things.obstacle(i);
-                objectStart[i] = line.size;
+                objectStart[i] = line.size();
                 line.put('[');
                 line.text(o.id());
                 line.put(',');
                 line.text(o.kind().wireName());
                 line.put(',');
-                objectSplit[i] = line.size;
+                objectSplit[i] = line.size();
                 line.put(',');
                 line.integer(LeanUnits.size(o.radius()));
                 line.put(',');
                 line.integer(LeanUnits.size(o.height()));
                 line.put(']');
             }
-            objectStart[things.obstacles()] = line.size;
-            objects = Arrays.copyOf(line.bytes, line.size);
-            line.size = 0;
+            objectStart[things.obstacles()] = line.size();
+            objects = line.toArray();
+            line.clear();
             fruitStart = new int[things.fruit() + 1];
             for (int i = 0; i < things.fruit(); i++) {
                 PerceivedFruit f = things.fruit(i);
-                fruitStart[i] = line.size;
+                fruitStart[i] = line.size();
                 line.put('[');
                 line.text(f.id());
                 line.put(',');
@@ -183,87 +177,8 @@ final class LeanLines {
                 }
                 line.put(']');
             }
-            fruitStart[things.fruit()] = line.size;
-            fruit = Arrays.copyOf(line.bytes, line.size);
-        }
-    }
-
-    /**
-     * A line being built in an array of the writing thread, handed to the buffer at once: a byte
-     * at a time into a buffer costs a bounds check and an index update each, which made writing a
-     * line cost more than its few bytes.
-     */
-    private static final class Line {
-        byte[] bytes = new byte[4096];
-        int size;
-
-        private void room(int more) {
-            if (size + more > bytes.length) {
-                bytes = Arrays.copyOf(bytes, Math.max(2 * bytes.length, size + more));
-            }
-        }
-
-        void put(char c) {
-            room(1);
-            bytes[size++] = (byte) c;
-        }
-
-        void ascii(String text) {
-            int length = text.length();
-            room(length);
-            for (int i = 0; i < length; i++) {
-                bytes[size++] = (byte) text.charAt(i);
-            }
-        }
-
-        /** Copies {@code from[start]} up to {@code from[end]}. */
-        void bytes(byte[] from, int start, int end) {
-            int length = end - start;
-            room(length);
-            System.arraycopy(from, start, bytes, size, length);
-            size += length;
-        }
-
-        void integer(long value) {
-            if (value == Long.MIN_VALUE) {
-                ascii(Long.toString(value));
-                return;
-            }
-            room(20);
-            if (value < 0) {
-                bytes[size++] = '-';
-                value = -value;
-            }
-            int digits = 1;
-            for (long rest = value / 10; rest > 0; rest /= 10) {
-                digits++;
-            }
-            int at = size + digits;
-            size = at;
-            do {
-                bytes[--at] = (byte) ('0' + value % 10);
-                value /= 10;
-            } while (value > 0);
-        }
-
-        /** A JSON string: plain printable ASCII is copied, anything else is escaped as the codec escapes it. */
-        void text(String text) {
-            int length = text.length();
-            for (int i = 0; i < length; i++) {
-                char c = text.charAt(i);
-                if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
-                    ByteBuf escaped = Unpooled.buffer(length + 8);
-                    FastLines.text(escaped, text);
-                    int n = escaped.readableBytes();
-                    room(n);
-                    escaped.readBytes(bytes, size, n);
-                    size += n;
-                    return;
-                }
-            }
-            put('"');
-            ascii(text);
-            put('"');
+            fruitStart[things.fruit()] = line.size();
+            fruit = line.toArray();
         }
     }
 }

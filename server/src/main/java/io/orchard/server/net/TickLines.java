@@ -1,8 +1,7 @@
 package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
-import io.netty.buffer.ByteBufUtil;
-import io.netty.buffer.Unpooled;
+import io.netty.util.concurrent.FastThreadLocal;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -22,6 +21,20 @@ final class TickLines {
 
     private static final MessageCodec CODEC = new MessageCodec();
 
+    /**
+     * The array each network thread writes a client's lines into before handing them to the
+     * client's buffer at once; kept from one client to the next, but not beyond this size, which a
+     * world's snapshot for a viewer may pass.
+     */
+    private static final FastThreadLocal<LineBytes> LINES = new FastThreadLocal<>() {
+        @Override
+        protected LineBytes initialValue() {
+            return new LineBytes(KEPT_BYTES / 16);
+        }
+    };
+
+    private static final int KEPT_BYTES = 1 << 20;
+
     private TickLines() {}
 
     /**
@@ -31,44 +44,52 @@ final class TickLines {
      * @return the index of the message it stopped at, or the number of messages
      */
     static int write(List<?> messages, int from, ClientForms forms, ByteBuf out) {
-        for (int i = from; i < messages.size(); i++) {
-            Object message = messages.get(i);
-            if (message instanceof EncodedLine line) {
-                if (carriesModel(line.message())) {
-                    return i;
-                }
-                out.writeBytes(line.bytes(TickLines::encode));
-            } else if (message instanceof Percept percept) {
-                if (forms.leanPerception()) {
-                    LeanLines.write(percept, out);
-                } else {
-                    for (ServerMessage part : percept.messages()) {
-                        plain(part, out);
+        LineBytes lines = LINES.get();
+        lines.clear();
+        try {
+            for (int i = from; i < messages.size(); i++) {
+                Object message = messages.get(i);
+                if (message instanceof EncodedLine line) {
+                    if (carriesModel(line.message())) {
+                        return i;
                     }
+                    lines.bytes(line.bytes(TickLines::encode));
+                } else if (message instanceof Percept percept) {
+                    if (forms.leanPerception()) {
+                        LeanLines.write(percept, lines);
+                    } else {
+                        for (ServerMessage part : percept.messages()) {
+                            plain(part, lines);
+                        }
+                    }
+                } else {
+                    ServerMessage plain = (ServerMessage) message;
+                    if (carriesModel(plain)) {
+                        return i;
+                    }
+                    plain(plain, lines);
                 }
-            } else {
-                ServerMessage plain = (ServerMessage) message;
-                if (carriesModel(plain)) {
-                    return i;
-                }
-                plain(plain, out);
             }
+            return messages.size();
+        } finally {
+            lines.writeTo(out);
+            lines.clear();
+            lines.shrink(KEPT_BYTES);
         }
-        return messages.size();
     }
 
     /** A broadcast's line, encoded once for every client that gets it. */
     static byte[] encode(ServerMessage message) {
-        ByteBuf out = Unpooled.buffer(256);
-        if (!FastLines.write(message, out)) {
+        LineBytes line = new LineBytes(256);
+        if (!FastLines.write(message, line)) {
             return CODEC.encodeLine(message);
         }
-        return ByteBufUtil.getBytes(out);
+        return line.toArray();
     }
 
-    private static void plain(ServerMessage message, ByteBuf out) {
-        if (!FastLines.write(message, out)) {
-            out.writeBytes(CODEC.encodeLine(message));
+    private static void plain(ServerMessage message, LineBytes lines) {
+        if (!FastLines.write(message, lines)) {
+            lines.bytes(CODEC.encodeLine(message));
         }
     }
 
