@@ -14,8 +14,9 @@ import java.util.List;
  * forms the client reads: a broadcast is copied from its shared bytes, a perception
  * ({@link Percept}) becomes one lean line for a client that reads the lean form ({@link LeanLines})
  * and its three messages for the others, the lines that make most of the traffic are written
- * directly ({@link FastLines}) and the rest by the codec. It stops before an {@code AgentAdded} with a model's data, which its caller writes from the
- * copy every client shares. Stateless.
+ * directly ({@link FastLines}) and the rest by the codec, all into an array of the network thread
+ * that goes to the buffer in one copy. It stops before an {@code AgentAdded} with a model's data,
+ * which its caller writes from the copy every client shares.
  */
 final class TickLines {
 

@@ -31,7 +31,10 @@ final class CrowdGrid {
     private final int minRow;
     private final int columns;
     private final int rows;
-    /** Cell (column, row) holds items {@code start[c]} up to {@code start[c + 1]}, c = (column - minColumn) * rows + row - minRow. */
+    /**
+     * Cell (column, row) holds items {@code start[c]} up to {@code start[c + 1]}, where
+     * c = (column - minColumn) * rows + row - minRow.
+     */
     private final int[] start;
     private final Agent[] agents;
     private final double[] x;

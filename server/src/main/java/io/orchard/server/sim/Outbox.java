@@ -136,7 +136,7 @@ final class Outbox {
         record(null, session, null, missed);
     }
 
-    /** Sends to every client of the audience, encoded once for all of them (by the network thread that writes it first). */
+    /** Sends to every client of the audience, encoded once for all by the network thread that writes it first. */
     void broadcast(ServerMessage message, Audience audience) {
         record(audience, null, message, null);
         Map<Long, ClientSession> to = switch (audience) {

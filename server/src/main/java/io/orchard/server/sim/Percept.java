@@ -168,7 +168,10 @@ public final class Percept {
         return castle;
     }
 
-    /** The perception as the ordinary form has it: {@code Perception}, {@code LandmarkPerception}, {@code CastlePerception}. */
+    /**
+     * The perception as the ordinary form has it: {@code Perception}, {@code LandmarkPerception} and
+     * {@code CastlePerception}.
+     */
     public List<ServerMessage> messages() {
         if (messages == null) {
             List<PerceivedObject> seenObjects = new ArrayList<>(objects.length);
@@ -186,7 +189,8 @@ public final class Percept {
             for (int index : fruit) {
                 seenFruit.add(things.fruit(index));
             }
-            messages = List.of(new PerceptionMessage(tick, agent, position, heading, seenObjects, seenAgents, seenFruit),
+            messages = List.of(
+                    new PerceptionMessage(tick, agent, position, heading, seenObjects, seenAgents, seenFruit),
                     new LandmarkPerceptionMessage(tick, agent, river, bridges),
                     new CastlePerceptionMessage(tick, agent, castle));
         }
