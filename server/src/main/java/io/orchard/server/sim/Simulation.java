@@ -13,7 +13,6 @@ import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.message.NewGameMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ScoreUpdateMessage;
-import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
@@ -204,15 +203,13 @@ public final class Simulation implements Inbox {
             turns.began(agentSessions());
         }
         outbox.broadcast(new TickMessage(tick, outbox.time()), Audience.ALL);
-        AgentGrid crowd = null;
+        CrowdGrid.Query crowd = null;
         for (Agent agent : agents.values()) {
             if (agent.perceivesIn(tick)) {
                 if (crowd == null) {
-                    crowd = new AgentGrid(agents.values(), PERCEPTION_CELL);
+                    crowd = CrowdGrid.of(agents.values(), PERCEPTION_CELL);
                 }
-                for (ServerMessage perception : perceptions.of(agent, crowd, tick)) {
-                    outbox.send(agent.owner, perception);
-                }
+                outbox.send(agent.owner, perceptions.of(agent, crowd, tick));
                 agent.perceptionRequested = false;
                 if (agent.perceptionEvery > 0) {
                     agent.nextPerceptionTick = tick + agent.perceptionEvery;
