@@ -7,7 +7,7 @@ from typing import Any, Dict, Optional, Sequence, Tuple
 import gymnasium as gym
 import numpy as np
 
-from ..messages import Body
+from ..messages import Body, LeanPerception
 from ..server import JAVA_OPTIONS, SPECIES
 from . import _observe
 from ._parallel import OrchardParallelEnv
@@ -54,6 +54,17 @@ class ForageEnv(gym.Env):  # type: ignore[misc]
         o, r, term, trunc, info = self._env.step({LEARNER: action})
         info = dict(info[LEARNER], scores=self._env.scores)
         return o[LEARNER], r[LEARNER], term[LEARNER], trunc[LEARNER], info
+
+    @property
+    def perception(self) -> Optional[LeanPerception]:
+        """What the learner perceived at the first tick of this step, in units and radians (None before a game):
+        for a reward or features of your own."""
+        return self._env.perception(LEARNER)
+
+    @property
+    def body(self) -> Body:
+        """The learner's body (its gripper's reach and heights, its sight)."""
+        return self._env.body
 
     def render(self) -> Optional[np.ndarray]:
         return self._env.render()

@@ -128,6 +128,10 @@ class Game:
             return []
         if action == _observe.FORWARD:
             step = learner.body.max_speed * self.ticks_per_step / self.welcome.tick_rate
+            # Up to a trunk or table in the way rather than refused, so that a learner gets next to a table's
+            # fruit; with no room at all the full step goes, and is refused.
+            free = _observe.free_ahead(p, learner.body.radius, step) - _observe.CLEARANCE
+            step = free if free > _observe.CLEARANCE else step
             return [Move(learner.name, Point2(p.position.x - step * math.sin(p.heading),
                                               p.position.z - step * math.cos(p.heading)))]
         if action in (_observe.TURN_LEFT, _observe.TURN_RIGHT):

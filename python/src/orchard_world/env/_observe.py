@@ -33,6 +33,10 @@ SIZE = len(FIELDS)
 
 ACTIONS = ("stay", "forward", "turn_left", "turn_right", "grasp")
 STAY, FORWARD, TURN_LEFT, TURN_RIGHT, GRASP = range(len(ACTIONS))
+# The server's rule for a tree's trunk, from its crown's radius (docs/scenarios.md).
+TRUNK_SHARE, TRUNK_MIN, TRUNK_MAX = 0.15, 0.2, 0.5
+# A forward walk stops this far short of a trunk or table in the way, so that it is not refused for touching.
+CLEARANCE = 0.02
 
 
 def observation_space() -> spaces.Box:
@@ -55,6 +59,23 @@ def graspable(p: LeanPerception, body: Body, fruit: PerceivedFruit) -> bool:
     """Whether a grasp of ``fruit`` would succeed from here (protocol 10.4)."""
     distance, bearing = bearing_to(p, fruit.position.x, fruit.position.z)
     return _reaches(body, fruit, distance, bearing)
+
+
+def free_ahead(p: LeanPerception, radius: float, length: float) -> float:
+    """How far the agent may walk straight ahead, up to ``length``, before touching a trunk or a table in view.
+
+    A tree blocks with its trunk, 15 % of its crown's radius but from 0.2 to 0.5 and never more than the
+    crown (docs/scenarios.md); a table with its top. The river, the castle and the world's edge are not
+    looked at: the server refuses a move into them.
+    """
+    free = length
+    for t in p.objects:
+        block = t.radius if t.kind != "tree" else min(t.radius, max(TRUNK_MIN, min(TRUNK_MAX, t.radius * TRUNK_SHARE)))
+        reach = block + radius
+        ahead, aside = t.at.distance * math.cos(t.at.bearing), t.at.distance * math.sin(t.at.bearing)
+        if ahead > 0 and abs(aside) < reach:  # a centre behind or beside gets no nearer
+            free = min(free, max(0.0, ahead - math.sqrt(reach * reach - aside * aside)))
+    return free
 
 
 def _reaches(body: Body, fruit: PerceivedFruit, distance: float, bearing: float) -> bool:
@@ -82,8 +103,10 @@ def observe(p: LeanPerception, body: Body, bounds: Bounds, time_left: float) -> 
     o[2], o[3] = sin(p.heading), cos(p.heading)
     o[4] = time_left
     if p.fruit:
+        # The fruit the gripper reaches in height first: a learner looks at slot 0 for its next fruit.
+        low, high = body.gripper.min_height, body.gripper.max_height
         fruit = sorted(((bearing_to(p, f.position.x, f.position.z), f.id, f) for f in p.fruit),
-                       key=lambda e: (e[0][0], e[1]))
+                       key=lambda e: (not low <= e[2].position.y <= high, e[0][0], e[1]))
         i = _FRUIT_AT
         for (distance, bearing), _, f in fruit[:NEAREST_FRUIT]:
             o[i:i + 6] = (1.0, distance / seen, sin(bearing), cos(bearing), f.position.y / 4,

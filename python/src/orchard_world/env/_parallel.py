@@ -14,7 +14,7 @@ from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
 from ..errors import OrchardError
-from ..messages import Body, check_name
+from ..messages import Body, LeanPerception, check_name
 from ..server import JAVA_OPTIONS, SPECIES, ServerProcess, start_opponents
 from . import _observe, _render
 from ._game import Game, check_options
@@ -208,6 +208,12 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
         if self._game is None:
             return np.zeros((self.render_size, self.render_size, 3), dtype=np.uint8)
         return _render.draw(self._game.view, self.possible_agents, self.render_size, self._cache)
+
+    def perception(self, agent: str) -> Optional[LeanPerception]:
+        """What ``agent`` perceived at the first tick of this step, in units and radians (None before a game)."""
+        if self._game is None or agent not in self._game.learners:
+            return None
+        return self._game.learners[agent].perception
 
     @property
     def scores(self) -> Dict[str, int]:
