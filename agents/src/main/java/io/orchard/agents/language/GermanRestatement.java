@@ -140,7 +140,8 @@ final class GermanRestatement {
         return "du hast gefragt, " + switch (ask.topic()) {
             case SEE -> ask.about() == null ? "was ich sehe" : "ob ich " + plural(ask.about(), Case.ACC) + " sehe";
             case WHERE -> "wo ich bin";
-            case COLLECTED -> "was ich gesammelt habe";
+            case COLLECTED -> ask.about() == null ? "was ich gesammelt habe"
+                    : "wie viele " + plural(ask.about(), Case.ACC) + " ich gesammelt habe";
             case DOING -> "was ich mache";
             case WHY -> "warum ich angehalten habe";
             case WHERE_IS -> ask.about().isFruit() && ask.about().distance() == null && ask.about().id() == null

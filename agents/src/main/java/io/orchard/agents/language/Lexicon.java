@@ -919,7 +919,7 @@ final class Lexicon {
             phrase("over to the other side", "to beyond");
             phrase("over to the other side of", "to beyond");
             phrase("across from", "beyond");
-            for (String near : List.of("this", "our", "my", "the near", "the same", "the nearer")) {
+            for (String near : List.of("this", "our", "my", "your", "the near", "the same", "the nearer")) {
                 phrase("on " + near + " side of", "this-side");
                 phrase(near + " side of", "this-side");
                 phrase("on " + near + " side", "this-side");

@@ -22,7 +22,7 @@ class UnseenInstructionsTest {
     private static final String SET = "/language/unseen.tsv";
 
     /** The share understood that docs/instructions.md reports; the set may not fall below it. */
-    private static final double REPORTED_SHARE = 40.0 / 47;
+    private static final double REPORTED_SHARE = 47.0 / 47;
 
     private static final InstructionInterpreter ENGLISH = new InstructionInterpreter();
     private static final InstructionInterpreter GERMAN = new InstructionInterpreter(List.of(), Language.GERMAN);
