@@ -193,10 +193,10 @@ final class GameLoop {
             graspResult(result);
         } else if (message instanceof FruitEatenMessage eaten) {
             if (situation.inWorld()) {
-                situation.memory().fruitEaten(eaten.fruit());
                 if (eaten.agent().equals(name)) {
-                    situation.memory().collected(eaten.kind());
+                    situation.memory().collected(eaten.fruit(), eaten.kind());
                 }
+                situation.memory().fruitEaten(eaten.fruit());
             }
             guarded(() -> agent.onFruitEaten(eaten));
         } else if (message instanceof ScoreUpdateMessage update) {

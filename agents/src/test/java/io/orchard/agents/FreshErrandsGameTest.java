@@ -1,240 +1,48 @@
 package io.orchard.agents;
 
+import static io.orchard.agents.ErrandScript.CARRYING_ON;
+import static io.orchard.agents.ErrandScript.Step.step;
+import static io.orchard.agents.ErrandScript.off;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import io.orchard.agents.ErrandScript.Errand;
+import io.orchard.agents.ErrandScript.Step;
+import io.orchard.agents.ErrandScript.Window;
 import io.orchard.agents.language.InstructionSets;
-import io.orchard.agents.zoo.Recording;
 import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.FruitState;
 import io.orchard.protocol.value.Point2;
-import io.orchard.server.sim.GameListener;
 import io.orchard.server.world.Bank;
 import io.orchard.server.world.Bridge;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
-import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Instructions of the fresh set ({@code language/fresh.tsv}), as a new user typed them, carried out
- * as real errands: three lockstep games on port 0, each carrying one errand after the other, the
- * next given when the agent says the last is done; the server's recording of each game shows where
- * the agent stood and which way it faced from the tick it took an instruction to the tick it said it
- * was done, and the game which fruit it took. The agent's own behaviour does nothing, so that
- * whatever it did between those ticks it did for the errand.
+ * as real errands ({@link ErrandScript}): three lockstep games on port 0, each carrying one errand
+ * after the other, the next given when the agent says the last is done; the server's recording of
+ * each game shows where the agent stood and which way it faced from the tick it took an instruction
+ * to the tick it said it was done, and the game which fruit it took.
  */
 class FreshErrandsGameTest {
 
     private static final long SEED = InstructedAgentTest.SEED;
-    private static final int TICKS_PER_SECOND = 20;
-    private static final String CARRYING_ON = ".* Carrying on by myself\\.";
 
     private final World world = WorldGenerator.standard(SEED).generate();
-    private final Map<String, FruitState> fruit = new HashMap<>();
 
     @TempDir
     Path recordings;
 
-    FreshErrandsGameTest() {
-        Games.fruitOf(SEED).forEach(f -> fruit.put(f.id(), f));
-    }
-
-    /** An agent that does nothing on its own, and notes what it said and when. */
-    static final class Errand extends AgentController {
-        final List<String> said = new CopyOnWriteArrayList<>();
-        final List<Long> saidAt = new CopyOnWriteArrayList<>();
-        final List<Long> toldAt = new CopyOnWriteArrayList<>();
-
-        Errand() {
-            super("Errand");
-            addSpeechListener(text -> {
-                saidAt.add(tick());
-                said.add(text);
-            });
-        }
-
-        @Override
-        protected AgentBody body() {
-            return AgentBody.builder().radius(0.4).speed(8).gripper("hands", 0.7, 0, 2)
-                    .sight(35, 2 * Math.PI).build();
-        }
-
-        @Override
-        protected void decide(Perception perception) {
-            pursueInstruction(); // and otherwise stands where it is
-        }
-
-        @Override
-        protected void onInstruction(String text, String from) {
-            toldAt.add(tick());
-            super.onInstruction(text, from);
-        }
-    }
-
-    /**
-     * A sentence of the fresh set, the line the agent says when it is done with it, how many ticks to
-     * let pass before the next, and what the game must show.
-     */
-    record Step(String sentence, Pattern done, int pause, Consumer<Window> check) {
-    }
-
-    private static Step step(String sentence, String done, Consumer<Window> check) {
-        return new Step(sentence, Pattern.compile(done), 0, check);
-    }
-
-    /** What the game showed from the tick an errand was taken to the tick it was said to be done. */
-    final class Window {
-        final Step step;
-        final Recording recording;
-        final long from;
-        final long to;
-        final List<String> said;
-        final List<FruitState> taken;
-        final Window previous;
-
-        Window(Step step, Recording recording, long from, long to, List<String> said, List<FruitState> taken,
-               Window previous) {
-            this.previous = previous;
-            this.step = step;
-            this.recording = recording;
-            this.from = from;
-            this.to = to;
-            this.said = said;
-            this.taken = taken;
-        }
-
-        List<Recording.Tick> ticks() {
-            return recording.ticks().stream().filter(t -> t.tick() >= from && t.tick() <= to).toList();
-        }
-
-        Point2 start() {
-            return at(from);
-        }
-
-        Point2 end() {
-            return at(to);
-        }
-
-        Point2 at(long tick) {
-            return recording.ticks().stream().filter(t -> t.tick() >= tick).findFirst().orElseThrow().at();
-        }
-
-        double heading(long tick) {
-            return recording.ticks().stream().filter(t -> t.tick() >= tick && !Double.isNaN(t.heading()))
-                    .findFirst().orElseThrow().heading();
-        }
-
-        double startHeading() {
-            return heading(from);
-        }
-
-        /** Which way it faced once done: a turn sent in a tick shows in the perception of the tick after. */
-        double endHeading() {
-            return heading(to + 2);
-        }
-
-        /** How far the agent went from its start along the heading it had then (negative: backwards). */
-        double forward() {
-            return along(end(), startHeading());
-        }
-
-        double along(Point2 p, double heading) {
-            return (p.x() - start().x()) * -Math.sin(heading) + (p.z() - start().z()) * -Math.cos(heading);
-        }
-
-        /** The seconds the errand took. */
-        double seconds() {
-            return (to - from) / (double) TICKS_PER_SECOND;
-        }
-
-        @Override
-        public String toString() {
-            return String.format(Locale.ROOT, "'%s' from tick %d at %s to %d at %s, said %s, took %s", step.sentence(),
-                    from, start(), to, end(), said, taken.stream().map(FruitState::id).toList());
-        }
-    }
-
     /** The games: the agent's place, then its errands, one after the other. */
     private void play(String name, Point2 start, double seconds, List<Step> steps) throws Exception {
-        Set<String> fresh = Set.copyOf(InstructionSets.fresh());
-        assertThat(steps).allSatisfy(s -> assertThat(fresh).as("a sentence of fresh.tsv").contains(s.sentence()));
-        Errand agent = new Errand();
-        List<Long> from = new CopyOnWriteArrayList<>();
-        List<Long> to = new CopyOnWriteArrayList<>();
-        List<Integer> saidFrom = new CopyOnWriteArrayList<>();
-        List<Integer> saidTo = new CopyOnWriteArrayList<>();
-        List<String> eatenIds = new CopyOnWriteArrayList<>();
-        List<Double> eatenAt = new CopyOnWriteArrayList<>();
-        GameListener teacher = new GameListener() {
-            private int current;
-            private long next = 2;
-            private boolean given;
-
-            @Override
-            public void tickEnded(long tick, double time) {
-                if (current >= steps.size() || tick < next) {
-                    return;
-                }
-                Step step = steps.get(current);
-                if (!given) {
-                    saidFrom.add(agent.said.size());
-                    agent.instruct(step.sentence());
-                    given = true;
-                    return;
-                }
-                int first = saidFrom.get(current);
-                for (int i = first; i < agent.said.size(); i++) {
-                    if (step.done().matcher(agent.said.get(i)).matches()) {
-                        from.add(agent.toldAt.get(current));
-                        to.add(agent.saidAt.get(i));
-                        saidTo.add(i + 1);
-                        current++;
-                        given = false;
-                        next = tick + 1 + step.pause();
-                        return;
-                    }
-                }
-            }
-
-            @Override
-            public void fruitEaten(String who, String fruitId, FruitKind kind, double time) {
-                if (who.equals("Errand")) {
-                    eatenIds.add(fruitId);
-                    eatenAt.add(time);
-                }
-            }
-        };
-        Path file = recordings.resolve(name + ".ndjson");
-
-        Games.recorded(SEED, seconds, List.of(agent), Games.at(Map.of("Errand", start.at(0))), teacher, file);
-
-        assertThat(to).as("errands of game %s done; said %s", name, agent.said).hasSameSizeAs(steps);
-        Recording recording = Recording.read(file, "Errand");
-        Window previous = null;
-        for (int i = 0; i < steps.size(); i++) {
-            long a = from.get(i);
-            long b = to.get(i);
-            List<FruitState> taken = new ArrayList<>();
-            for (int k = 0; k < eatenIds.size(); k++) {
-                long tick = Math.round(eatenAt.get(k) * TICKS_PER_SECOND);
-                if (tick >= a && tick <= b + 1) {
-                    taken.add(fruit.get(eatenIds.get(k)));
-                }
-            }
-            previous = new Window(steps.get(i), recording, a, b, List.copyOf(agent.said.subList(saidFrom.get(i),
-                    saidTo.get(i))), taken, previous);
-            steps.get(i).check().accept(previous);
-        }
+        ErrandScript.play(SEED, recordings.resolve(name + ".ndjson"), start, seconds, steps,
+                Set.copyOf(InstructionSets.fresh()), new Errand(), List.of());
     }
 
     // ---- game 1: turning and walking --------------------------------------------------------------
@@ -408,7 +216,4 @@ class FreshErrandsGameTest {
         return new Point2((bridge.entryA().x() + bridge.entryB().x()) / 2, (bridge.entryA().z() + bridge.entryB().z()) / 2);
     }
 
-    private static double off(double heading, double wanted) {
-        return Math.abs(Math.IEEEremainder(heading - wanted, 2 * Math.PI));
-    }
 }

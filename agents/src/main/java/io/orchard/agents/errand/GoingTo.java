@@ -60,7 +60,10 @@ final class GoingTo implements Pursuit {
             if (here.distance(where) <= Grounder.CASTLE_SIZE + 6) {
                 return done();
             }
-            Point2 spot = towards(where, here, Grounder.CASTLE_SIZE + 4);
+            // The estimate may put the side facing the agent in the river, across which it is not: stand
+            // where it may, around the castle.
+            Point2 spot = kit.around(where, Grounder.CASTLE_SIZE + 4)
+                    .orElse(towards(where, here, Grounder.CASTLE_SIZE + 4));
             status = kit.navigator.goTo(spot, 2);
             if (status == Status.FAILED && here.distance(where) <= Grounder.CASTLE_SIZE + 12) {
                 return done(); // the castle's wall is nearer than estimated

@@ -7,6 +7,7 @@ import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Reference.Kind;
 import io.orchard.agents.map.Bearings;
 import io.orchard.protocol.value.Point2;
+import java.util.Optional;
 import java.util.function.Predicate;
 
 /**
@@ -64,6 +65,11 @@ final class GoingToPlace implements Pursuit {
                     : Turning.heading(relation.sector());
             return WalkPursuit.to(kit, Bearings.ahead(kit.grounder.toldAt(), heading, INTO), "");
         }
+        if (relation == Place.Relation.FOUND) {
+            Optional<Point2> spot = kit.grounder.found(anchor);
+            return spot.isPresent() ? WalkPursuit.to(kit, spot.get(), "")
+                    : new Refused(kit.speech.neverFound(anchor)); // "where you found the coconut": it took none
+        }
         boolean river = anchor.kind() == Kind.RIVER || anchor.kind() == Kind.BRIDGE;
         if (river && (relation == Place.Relation.BEYOND || relation == Place.Relation.THIS_SIDE_OF)) {
             return new Crossing(kit, anchor.kind() == Kind.BRIDGE ? anchor : Reference.to(Kind.BRIDGE), null);
@@ -72,6 +78,14 @@ final class GoingToPlace implements Pursuit {
             return new Beside(anchor);
         }
         return new GoingTo(kit, anchor, null);
+    }
+
+    /** A way there that is no way: what the agent cannot do, said once. */
+    private record Refused(String outcome) implements Pursuit {
+        @Override
+        public Status step() {
+            return Status.FAILED;
+        }
     }
 
     /** Walks to a point on the named side of the anchor, once the anchor is known. */

@@ -5,6 +5,7 @@ import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Reference.Kind;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.CastleEstimate;
+import io.orchard.agents.map.Find;
 import io.orchard.agents.map.KnownBridge;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.KnownObstacle;
@@ -33,6 +34,9 @@ final class Grounder {
 
     /** "Near" something: its edge within this many units. */
     static final double NEAR = 10;
+
+    /** "Where you found the coconut": within this many units of where the agent stood when it took it. */
+    static final double FOUND_NEAR = 1.5;
 
     /** The castle's size as the agent reckons it: its core, and a little more. */
     static final double CASTLE_SIZE = CastleEstimate.CORE_RADIUS + 3;
@@ -64,6 +68,23 @@ final class Grounder {
     Point2 start() {
         Point2 start = memory.start();
         return start != null ? start : memory.position();
+    }
+
+    /**
+     * Where the agent stood when it took the last fruit that fits {@code fruit} ("where you found the
+     * coconut"); empty when it has taken none.
+     */
+    Optional<Point2> found(Reference fruit) {
+        List<Find> finds = memory.finds();
+        for (int i = finds.size() - 1; i >= 0; i--) {
+            Find find = finds.get(i);
+            boolean fits = fruit.kind().matches(find.kind()) && (fruit.id() == null || fruit.id().equals(find.fruitId()))
+                    && (fruit.place() == null || find.fruit() != null && where(fruit.place()).test(Known.fruit(find.fruit())));
+            if (fits) {
+                return Optional.of(find.stood());
+            }
+        }
+        return Optional.empty();
     }
 
     /** Grounds the reference: the one it means, several to choose between, or none yet. */
@@ -198,6 +219,10 @@ final class Grounder {
         }
         if (relation == Place.Relation.CLOSEST_TO || relation == Place.Relation.FARTHEST_FROM) {
             return k -> true; // the one is picked among those that fit, in fitting()
+        }
+        if (relation == Place.Relation.FOUND) {
+            Optional<Point2> spot = found(anchorReference);
+            return k -> spot.isPresent() && k.where().distance(spot.get()) <= k.size() + FOUND_NEAR;
         }
         List<Known> anchors = anchorReference.kind() == Kind.PLACE ? List.of()
                 : select(anchorReference, fitting(anchorReference));

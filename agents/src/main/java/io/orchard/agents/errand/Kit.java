@@ -118,8 +118,15 @@ final class Kit {
      * agent if that side is free, else around it; empty when there is none known.
      */
     Optional<Point2> besides(Point2 centre, double size) {
+        return around(centre, size + memory.radius() + 0.6);
+    }
+
+    /**
+     * A spot {@code distance} from {@code centre} where the agent may stand, on the side facing the agent
+     * if it may stand there, else around it; empty when there is none known.
+     */
+    Optional<Point2> around(Point2 centre, double distance) {
         Point2 here = here();
-        double distance = size + memory.radius() + 0.6;
         double towards = Math.atan2(here.z() - centre.z(), here.x() - centre.x());
         for (double turn : List.of(0.0, 0.5, -0.5, 1.0, -1.0, 1.6, -1.6, 2.2, -2.2, Math.PI)) {
             Point2 spot = new Point2(centre.x() + distance * Math.cos(towards + turn),

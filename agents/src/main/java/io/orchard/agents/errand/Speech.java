@@ -262,6 +262,12 @@ final class Speech {
                 : "I won't go there: that is against " + rule + ".";
     }
 
+    /** "Where you found the coconut", when the agent has taken none. */
+    String neverFound(Reference fruit) {
+        return de() ? "Ich habe noch keine " + bare(fruit.withDistance(null)) + " genommen, also weiß ich nicht, wo ich "
+                + "eine gefunden habe." : "I haven't taken a " + bare(fruit) + " yet, so I don't know where I found one.";
+    }
+
     String noWayThere() {
         return de() ? "Ich finde keinen Weg dorthin." : "I can't find a way there.";
     }

@@ -57,6 +57,7 @@ final class Answers {
     final String DEMONSTRATIVE;
     final String GENERIC_FAILURE;
     final String WAIT_RANGE;
+    final String FOUND_WHAT;
 
     private Answers(boolean de) {
         language = de ? Language.GERMAN : Language.ENGLISH;
@@ -188,6 +189,8 @@ final class Answers {
                 : "Sorry, I could not make sense of that; " + CAN_DO + ".";
         WAIT_RANGE = de ? "Ich kann bis zu einem Tag warten; " + CAN_WAIT + "." : "I can wait up to a day; " + CAN_WAIT
                 + ".";
+        FOUND_WHAT = de ? "Ich merke mir nur, wo ich Früchte gefunden habe." : "I remember where I found fruit, for "
+                + "example 'go back to where you found the coconut'.";
     }
 
     /** The answers in this language. */

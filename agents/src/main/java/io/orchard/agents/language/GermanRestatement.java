@@ -140,7 +140,8 @@ final class GermanRestatement {
         return "du hast gefragt, " + switch (ask.topic()) {
             case SEE -> ask.about() == null ? "was ich sehe" : "ob ich " + plural(ask.about(), Case.ACC) + " sehe";
             case WHERE -> "wo ich bin";
-            case COLLECTED -> "was ich gesammelt habe";
+            case COLLECTED -> ask.about() == null ? "was ich gesammelt habe"
+                    : "wie viele " + plural(ask.about(), Case.ACC) + " ich gesammelt habe";
             case DOING -> "was ich mache";
             case WHY -> "warum ich angehalten habe";
             case WHERE_IS -> ask.about().isFruit() && ask.about().distance() == null && ask.about().id() == null
@@ -263,6 +264,7 @@ final class GermanRestatement {
             case BEHIND -> "nach hinten";
             case CLOSEST_TO -> "an die Stelle, die " + noun(anchor, Case.DAT) + " am nächsten ist";
             case FARTHEST_FROM -> "an die Stelle, die am weitesten von " + noun(anchor, Case.DAT) + " entfernt ist";
+            case FOUND -> "dorthin, " + found(anchor);
             case BEYOND -> "auf die andere Seite " + noun(anchor, Case.GEN);
             case THIS_SIDE_OF -> "auf diese Seite " + noun(anchor, Case.GEN);
             default -> anchor == null ? "nach " + compass(place.relation().sector().wireName())
@@ -446,11 +448,19 @@ final class GermanRestatement {
             case BEHIND -> "hinter mir";
             case CLOSEST_TO -> contract("am nächsten zu " + noun(anchor, Case.DAT));
             case FARTHEST_FROM -> contract("am weitesten von " + noun(anchor, Case.DAT)) + " entfernt";
+            case FOUND -> "dort, " + found(anchor);
             case BEYOND -> "auf der anderen Seite " + noun(anchor, Case.GEN);
             case THIS_SIDE_OF -> "auf dieser Seite " + noun(anchor, Case.GEN);
             default -> anchor == null ? "im " + compass(place.relation().sector().wireName())
                     : contract(adverb(place.relation().sector().wireName()) + " von " + noun(anchor, Case.DAT));
         };
+    }
+
+    /** Where the agent took the fruit: "wo ich die Kokosnuss gefunden habe", the last it took. */
+    private static String found(Reference fruit) {
+        String it = noun(fruit, Case.ACC).replaceFirst("^einen ", "den ").replaceFirst("^eine ", "die ")
+                .replaceFirst("^ein ", "das ");
+        return "wo ich " + it + " gefunden habe";
     }
 
     private static boolean picked(Place place) {

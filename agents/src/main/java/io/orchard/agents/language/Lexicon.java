@@ -516,7 +516,7 @@ final class Lexicon {
             words(Cat.PREP, "through", "through", "thru");
             for (String prep : List.of("of", "for", "with", "up", "down", "back", "away", "out", "over", "across",
                     "after", "before", "at", "by", "via", "until", "till", "this-side", "on-ground", "on-left", "on-right",
-                    "in-front", "behind-me", "near-me")) {
+                    "in-front", "behind-me", "near-me", "found-at")) {
                 put(prep, Cat.PREP, prep);
             }
             words(Cat.HERE, "here", "here");
@@ -727,6 +727,14 @@ final class Lexicon {
                     "close to me", "next to me")) {
                 phrase(said, "near-me");
             }
+            // memory of places: where the agent took a fruit
+            for (String took : List.of("found", "picked up", "picked", "got", "took", "collected", "grabbed", "ate",
+                    "harvested", "fetched")) {
+                for (String where : List.of("where you %s", "where you first %s", "the place where you %s",
+                        "the spot where you %s", "the place you %s", "the spot you %s")) {
+                    phrase(String.format(where, took), "found-at");
+                }
+            }
             phrase("where you came from", "home");
             phrase("where you were", "home");
             phrase("where you were before", "home");
@@ -911,7 +919,7 @@ final class Lexicon {
             phrase("over to the other side", "to beyond");
             phrase("over to the other side of", "to beyond");
             phrase("across from", "beyond");
-            for (String near : List.of("this", "our", "my", "the near", "the same", "the nearer")) {
+            for (String near : List.of("this", "our", "my", "your", "the near", "the same", "the nearer")) {
                 phrase("on " + near + " side of", "this-side");
                 phrase(near + " side of", "this-side");
                 phrase("on " + near + " side", "this-side");

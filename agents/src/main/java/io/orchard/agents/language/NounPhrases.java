@@ -373,7 +373,8 @@ final class NounPhrases {
 
     static boolean isRelation(Lexeme t) {
         return t.isAny(PREP, "on", "on-ground", "in", "under", "from", "near", "by", "at", "around", "via", "beyond",
-                "across", "over", "through", "this-side", "on-left", "on-right", "in-front", "behind-me", "near-me");
+                "across", "over", "through", "this-side", "on-left", "on-right", "in-front", "behind-me", "near-me",
+                "found-at");
     }
 
     /** The place introduced by the relation word at the cursor. */
@@ -405,6 +406,12 @@ final class NounPhrases {
         Phrase anchor = phrase(c, true);
         if (anchor == null || anchor.world()) {
             throw Refusal.hint(context.hint);
+        }
+        if (relation.is(PREP, "found-at")) {
+            if (anchor.ground() || !anchor.ref().isFruit()) {
+                throw Refusal.answer(context.answers.FOUND_WHAT); // "where you found the castle"
+            }
+            return Place.of(Relation.FOUND, anchor.ref()); // "where you found the coconut"
         }
         if (anchor.ground()) {
             return Place.onGround();

@@ -793,12 +793,25 @@ final class Parser {
             }
             throw Refusal.answer(context.answers.collectNotFruit(context.answers.noun(what, false)));
         }
-        if (phrase.pronoun() && what.equals(context.lastCollected)) {
-            return back ? new ComeBack() : null; // "pick up a banana and bring it back", "... and eat it"
+        Goal carried = null;
+        if (!back && c.peekIs(PREP, "to") && c.peekAt(1) != null && NounPhrases.startsNounPhrase(c.peekAt(1))) {
+            c.next();
+            carried = goTo(c); // "bring the coconut to the castle": collected, then carried there
         }
-        context.antecedent = what;
+        if (phrase.pronoun() && what.equals(context.lastCollected)) {
+            return back ? new ComeBack() : carried; // "pick up a banana and bring it back", "... and eat it"
+        }
+        if (carried == null) {
+            context.antecedent = what;
+        }
         context.lastCollected = what;
         Collect collect = new Collect(what, count(phrase));
+        if (carried != null) {
+            if (only) {
+                throw Refusal.answer(context.answers.ONLY_WHAT);
+            }
+            return Sequence.of(collect, carried);
+        }
         if (only) {
             if (!collect.isAll()) {
                 throw Refusal.answer(context.answers.ONLY_WHAT);

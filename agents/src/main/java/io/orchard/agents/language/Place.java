@@ -34,6 +34,9 @@ public record Place(Relation relation, @Nullable Reference anchor) {
                 && relation != Relation.NEAR && !relation.fromHeading()) {
             throw new IllegalArgumentException(relation + " needs an anchor, such as a table or the river");
         }
+        if (relation == Relation.FOUND && anchor != null && !anchor.isFruit()) {
+            throw new IllegalArgumentException("FOUND takes a fruit as its anchor, was given " + anchor);
+        }
         if (anchor != null && relation.fromHeading()) {
             throw new IllegalArgumentException(relation + " is taken from the agent's heading and takes no anchor, "
                     + "was given " + anchor);
@@ -96,7 +99,12 @@ public record Place(Relation relation, @Nullable Reference anchor) {
         /** The one of those that fit that is nearest to the anchor: "the fruit closest to the bridge". */
         CLOSEST_TO,
         /** The one of those that fit that is farthest from the anchor: "the table farthest from the castle". */
-        FARTHEST_FROM;
+        FARTHEST_FROM,
+        /**
+         * Where the agent found the anchor, a fruit it has picked up: "where you found the coconut" is the
+         * spot it stood on when it took the last coconut it took.
+         */
+        FOUND;
 
         /** Whether this relation is taken from the agent's heading: left, right, ahead, behind. */
         public boolean fromHeading() {

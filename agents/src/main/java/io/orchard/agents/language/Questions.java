@@ -24,6 +24,14 @@ final class Questions {
 
     private static final String X = "(?<x>.+?)";
 
+    /** How a question puts the agent in a place: "are you near the castle", "are you on the north side of ...". */
+    private static final String WHERE_WORDS = "on|in|at|near|by|close to|next to|beside|across|beyond|behind|past|over"
+            + "|north|south|east|west|north-east|north-west|south-east|south-west|to the";
+
+    /** What such a question places the agent by. */
+    private static final String LANDMARKS = "river|castle|bridge|bridges|forest|woods|wood|table|tables|tree|trees"
+            + "|bank|side|start";
+
     /** The frames, tried in order; the first that matches the whole sentence wins. */
     private static final List<Map.Entry<Pattern, Topic>> FRAMES = new ArrayList<>();
 
@@ -60,7 +68,8 @@ final class Questions {
         frame(Topic.SEE, "what is (in front of|around|near|ahead of|next to) you");
         frame(Topic.SEE, "(do|can) you see( any| some)? " + X);
         frame(Topic.WHERE, "where are you|where you are|which side of the river are you on"
-                + "|what side of the river are you on|are you near the castle");
+                + "|what side of the river are you on|are you (still )?(" + WHERE_WORDS + ")( \\w+)* (" + LANDMARKS
+                + ")");
         frame(Topic.HEADING, "(which|what) (way|direction) are you (facing|looking|heading|going)"
                 + "|where are you (facing|looking)");
         frame(Topic.DOING, "what are you doing( and why)?|what are you up to|why are you doing (that|this|it)"
@@ -74,12 +83,16 @@ final class Questions {
                 + "(following|keeping|obeying))|do you have any rules|what (rules )?(did|have) i (told|tell|given|give) "
                 + "you|what are you not allowed to do|what must you (avoid|not do)|(tell me|list) your rules|your rules"
                 + "|what rules do you follow|any rules");
+        frame(Topic.COLLECTED, "(do you have|have you got)( any| some)? " + X);
         frame(Topic.WHERE_IS, "where (is|are) " + X);
+        frame(Topic.WHERE_IS, "how far( away)? (is|are) " + X + "( from (you|here))?");
+        frame(Topic.WHERE_IS, "(is|are) " + X + " far( away)?( from (you|here))?");
         frame(Topic.WHERE_IS, "where " + X + " (is|are)");
         frame(Topic.WHERE_IS, "have you seen( any| some)? " + X);
         frame(Topic.WHERE_IS, "(is|are) there( any| some)? " + X);
         frame(Topic.WHERE_IS, "what " + X + " do you know( of| about)?");
         frame(Topic.WHERE_IS, "what do you know (of|about) " + X);
+        frame(Topic.WHERE_IS, "(what|which) (is|are) " + X);
         german(Topic.SEE, "was (siehst du|kannst du sehen)( um dich herum| vor dir)?");
         german(Topic.SEE, "(siehst|kannst) du( irgendwelche| eine| einen| ein| irgendeine| irgendeinen)? " + X
                 + "( sehen)?");

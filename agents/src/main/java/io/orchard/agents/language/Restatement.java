@@ -327,6 +327,11 @@ final class Restatement {
         return ("aeiou".indexOf(text.charAt(0)) >= 0 ? "an " : "a ") + text;
     }
 
+    /** Where the agent took the fruit: "where I found the coconut", the last it took. */
+    private static String found(Reference fruit) {
+        return "where I found " + noun(fruit).replaceFirst("^an? ", "the ");
+    }
+
     /** A place near an anchor or from the agent's heading: "near the river", "near me", "on my left". */
     private static String mine(Place place) {
         return switch (place.relation()) {
@@ -366,6 +371,7 @@ final class Restatement {
             case NEAR, LEFT, RIGHT, AHEAD, BEHIND -> mine(place);
             case CLOSEST_TO -> "closest to " + noun(anchor);
             case FARTHEST_FROM -> "farthest from " + noun(anchor);
+            case FOUND -> lies + found(anchor);
             case BEYOND -> "on the other side of " + noun(anchor);
             case THIS_SIDE_OF -> "on this side of " + noun(anchor);
             default -> anchor == null ? "to the " + place.relation().sector().wireName()
@@ -389,6 +395,7 @@ final class Restatement {
             case LEFT, RIGHT, AHEAD, BEHIND -> "to the area " + mine(place);
             case CLOSEST_TO -> "to the place closest to " + noun(anchor);
             case FARTHEST_FROM -> "to the place farthest from " + noun(anchor);
+            case FOUND -> "to " + found(anchor);
             case BEYOND -> "to the other side of " + noun(anchor);
             case THIS_SIDE_OF -> "to this side of " + noun(anchor);
             default -> anchor == null ? place.relation().sector().wireName()
@@ -416,6 +423,7 @@ final class Restatement {
             case NEAR, LEFT, RIGHT, AHEAD, BEHIND -> "the area " + mine(place);
             case CLOSEST_TO -> "the area closest to " + noun(anchor);
             case FARTHEST_FROM -> "the area farthest from " + noun(anchor);
+            case FOUND -> "the area " + found(anchor);
             default -> anchor == null ? "the " + place.relation().sector().wireName()
                     : "the area " + place.relation().sector().wireName() + " of " + noun(anchor);
         };

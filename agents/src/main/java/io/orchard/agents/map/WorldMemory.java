@@ -75,6 +75,7 @@ public final class WorldMemory {
     private long tick = -1;
     private Point2 start;
     private final Map<FruitKind, Integer> collected = new EnumMap<>(FruitKind.class);
+    private final List<Find> finds = new ArrayList<>();
     private long terrainVersion;
     private long fruitVersion;
     private Point2 lastExcluded;
@@ -160,9 +161,18 @@ public final class WorldMemory {
         coverage.look(self, facing, sight);
     }
 
-    /** This agent collected a fruit of this kind: counted, to tell the person what it has collected. */
-    public void collected(FruitKind kind) {
+    /**
+     * This agent collected this fruit: counted, to tell the person what it has collected, and where it
+     * stood remembered, to go back there when asked. Call it before {@link #fruitEaten}.
+     */
+    public void collected(String fruitId, FruitKind kind) {
         collected.merge(kind, 1, Integer::sum);
+        finds.add(new Find(fruitId, kind, fruit.get(fruitId), position));
+    }
+
+    /** The fruit this agent took and where it stood, the first first. */
+    public List<Find> finds() {
+        return Collections.unmodifiableList(finds);
     }
 
     /** The fruit this agent has collected, by kind; kinds it has not collected are left out. */
