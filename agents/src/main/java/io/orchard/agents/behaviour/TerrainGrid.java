@@ -3,6 +3,7 @@ package io.orchard.agents.behaviour;
 import io.orchard.agents.map.CastleEstimate;
 import io.orchard.agents.map.Circle;
 import io.orchard.agents.map.KnownBridge;
+import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.KnownObstacle;
 import io.orchard.agents.map.LearnedBlock;
 import io.orchard.agents.map.RiverMap;
@@ -19,8 +20,10 @@ import java.util.Arrays;
  * a table, the water away from a bridge, the castle's likely core, or something a rejected move
  * ran into). Where the agent has stood ({@link Trail}) is never blocked by the layers that are
  * guesses (the water, the castle, what refused moves taught): it stood there, so a path can lead
- * it out the way it came. Rebuilt from the memory when its terrain changes; the river layer, the
- * costliest, only when the river model changed.
+ * it out the way it came. Nor, by the estimates of the water and the castle, is the ground around
+ * a fruit it has seen, which lies on clear ground with room beside it to be grasped from. Rebuilt
+ * from the memory when its terrain changes; the river layer, the costliest, only when the river
+ * model changed.
  */
 final class TerrainGrid {
 
@@ -36,6 +39,12 @@ final class TerrainGrid {
     static final double WATER_MARGIN = 0.4;
     static final double CASTLE_CORE = CastleEstimate.CORE_RADIUS + 2;
     static final double CANDIDATE_CORE = 3;
+    /**
+     * How far around a fruit seen the ground is taken to be clear: a fruit lies out of the water
+     * and the castle, with ground beside it to grasp it from (the world generator sees to it),
+     * within reach of any gripper.
+     */
+    static final double FRUIT_GROUND = 2;
 
     private final WorldMemory memory;
     private final double radius;
@@ -48,8 +57,15 @@ final class TerrainGrid {
     final float[] extra;
     /** The layers that are not circles (water, castle, learned blocks, edges): what straight checks sample. */
     final byte[] terrain;
+    /** The cells the agent has stood in: A* steps diagonally from one to another past blocked corners, as the agent did. */
+    final boolean[] trodden;
+    /** The terrain layer and the extra costs as they were at the last change, to tell whether they changed. */
+    private final byte[] before;
+    private final float[] extraBefore;
     private final byte[] wet;
     private final byte[] edge;
+    /** Grows whenever the terrain layer or the extra costs change: what searches that ignore trunks and tables key on. */
+    long edition;
     private long builtVersion = -1;
     private long wetVersion = -1;
 
@@ -62,6 +78,9 @@ final class TerrainGrid {
         this.cells = new byte[nx * nz];
         this.extra = new float[nx * nz];
         this.terrain = new byte[nx * nz];
+        this.trodden = new boolean[nx * nz];
+        this.before = new byte[nx * nz];
+        this.extraBefore = new float[nx * nz];
         this.wet = new byte[nx * nz];
         this.edge = new byte[nx * nz];
         edges();
@@ -84,10 +103,20 @@ final class TerrainGrid {
         }
         Arrays.fill(extra, 0f);
         castle();
+        // The estimates may be wrong around a fruit; a refused move is not, and blocks what it ran into.
+        for (KnownFruit fruit : memory.fruit()) {
+            clear(fruit.ground(), FRUIT_GROUND);
+        }
         for (LearnedBlock block : memory.learned()) {
             learned(block);
         }
+        Arrays.fill(trodden, false);
         memory.trail().forEach(this::trodden);
+        if (!Arrays.equals(terrain, before) || !Arrays.equals(extra, extraBefore)) {
+            edition++;
+            System.arraycopy(terrain, 0, before, 0, terrain.length);
+            System.arraycopy(extra, 0, extraBefore, 0, extra.length);
+        }
         System.arraycopy(terrain, 0, cells, 0, terrain.length);
         for (KnownObstacle obstacle : memory.obstacles()) {
             circle(obstacle.centre(), obstacle.blockRadius() + obstacle.margin());
@@ -118,9 +147,27 @@ final class TerrainGrid {
         return bounds.minZ() + (index / nx + 0.5) * CELL;
     }
 
+    /** Ground known to be clear around a point: walkable at a cost, whatever the guesses say, unless beyond the edge. */
+    private void clear(Point2 centre, double reach) {
+        int i0 = column(centre.x() - reach);
+        int i1 = column(centre.x() + reach);
+        int k0 = row(centre.z() - reach);
+        int k1 = row(centre.z() + reach);
+        for (int k = k0; k <= k1; k++) {
+            for (int i = i0; i <= i1; i++) {
+                int index = index(i, k);
+                if (terrain[index] == BLOCKED && edge[index] != BLOCKED
+                        && Math.hypot(cx(index) - centre.x(), cz(index) - centre.z()) <= reach) {
+                    terrain[index] = NEAR;
+                }
+            }
+        }
+    }
+
     /** Ground the agent stood on: walkable at a cost, whatever the guesses say, unless beyond the world's edge. */
     private void trodden(Point2 p) {
         int index = indexOf(p);
+        trodden[index] = true;
         if (terrain[index] == BLOCKED && edge[index] != BLOCKED) {
             terrain[index] = NEAR;
         }

@@ -154,7 +154,8 @@ public final class WorldMemory {
             castle.observe(self, castleSeen.sector());
         }
         excludeCastle(self);
-        coverage.look(self, facing, sight);
+        coverage.look(self, facing, sight, castle.located()
+                ? Circle.around(castle.centre().orElseThrow(), CastleEstimate.CORE_RADIUS) : null);
     }
 
     /** This agent collected a fruit of this kind: counted, to tell the person what it has collected. */
@@ -352,6 +353,7 @@ public final class WorldMemory {
         if (before == null) {
             fruitVersion++;
             castle.exclude(seen.position().onGround(), CastleEstimate.CORE_RADIUS);
+            terrainVersion++; // the ground around it is land, whatever the guesses say
         }
     }
 
