@@ -9,10 +9,11 @@ import java.util.Arrays;
  * How far the agent has to walk, on its map, to every part of the world: one Dijkstra from where
  * it stands over cells of {@value #CELL} units, around what the planner's grid holds impassable
  * (the water away from a bridge, the castle's likely core, the world's edge, what refused moves
- * taught), a walk near a castle located counting more, as the planner's does. Trees and tables
- * are left out: small beside the distances it is asked about, which are for choosing where to go,
- * not for walking there. A cell is open when any part of it is, so that a bridge's deck stays a
- * way across however it lies on the cells.
+ * taught), a walk near a castle located counting more, as the planner's does, and a walk through an
+ * area a rule keeps the agent out of much more (the way out of one, for an agent that stands in
+ * it). Trees and tables are left out: small beside the distances it is asked about, which are for
+ * choosing where to go, not for walking there. A cell is open when any part of it is, so that a
+ * bridge's deck stays a way across however it lies on the cells.
  *
  * <p>Made again only when the agent stands in another cell or that layer of the map changed.
  * Not thread-safe.
@@ -116,14 +117,20 @@ final class WalkingField {
                 if (grid.terrain[fine] == TerrainGrid.BLOCKED) {
                     continue;
                 }
-                if (!open[cell] || grid.extra[fine] < grid.extra[stand[cell]]
-                        || (grid.extra[fine] == grid.extra[stand[cell]] && grid.cells[fine] < grid.cells[stand[cell]])) {
+                float cost = cost(fine);
+                if (!open[cell] || cost < cost(stand[cell])
+                        || (cost == cost(stand[cell]) && grid.cells[fine] < grid.cells[stand[cell]])) {
                     open[cell] = true;
                     stand[cell] = fine;
-                    weight[cell] = 1 + grid.extra[fine];
+                    weight[cell] = 1 + cost;
                 }
             }
         }
+    }
+
+    /** What a unit walked through a fine cell costs beyond the unit: the castle's surroundings, a rule's area. */
+    private float cost(int fine) {
+        return grid.extra[fine] + (grid.avoided[fine] != 0 ? (float) GridSearch.RULE_PENALTY : 0f);
     }
 
     private void spread(int start) {

@@ -7,6 +7,7 @@ import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Predicate;
 
 /**
  * Which parts of the world the agent has looked at: a grid of {@value #CELL}-unit cells, each seen
@@ -35,6 +36,7 @@ public final class Coverage {
     private final boolean[] wellSeen;
     private int seenCount;
     private boolean lookedAgain;
+    private Predicate<Point2> excluded = cell -> false;
 
     /** An empty coverage of the world's bounds. */
     public Coverage(Bounds bounds) {
@@ -97,18 +99,24 @@ public final class Coverage {
         return (double) seenCount / seen.length;
     }
 
-    /** The centres of the cells neither seen nor given up. */
+    /** The centres of the cells neither seen, nor given up, nor excluded. */
     public List<Point2> unseen() {
         List<Point2> cells = new ArrayList<>();
         for (int i = 0; i < seen.length; i++) {
             if (!seen[i] && !givenUp[i]) {
-                cells.add(centre(i));
+                Point2 centre = centre(i);
+                if (!excluded.test(centre)) {
+                    cells.add(centre);
+                }
             }
         }
         return cells;
     }
 
-    /** How many cells neither seen nor given up have their centre within {@code radius} of {@code point}. */
+    /**
+     * How many cells neither seen, nor given up, nor excluded have their centre within
+     * {@code radius} of {@code point}.
+     */
     public int unseenWithin(Point2 point, double radius) {
         int i0 = Math.max(0, (int) Math.floor((point.x() - radius - bounds.minX()) / CELL));
         int i1 = Math.min(nx - 1, (int) Math.floor((point.x() + radius - bounds.minX()) / CELL));
@@ -118,12 +126,22 @@ public final class Coverage {
         for (int k = k0; k <= k1; k++) {
             for (int i = i0; i <= i1; i++) {
                 int index = k * nx + i;
-                if (!seen[index] && !givenUp[index] && point.distance(centre(index)) <= radius) {
+                if (!seen[index] && !givenUp[index] && point.distance(centre(index)) <= radius
+                        && !excluded.test(centre(index))) {
                     count++;
                 }
             }
         }
         return count;
+    }
+
+    /**
+     * Leaves out of {@link #unseen()} the cells whose centre this excludes, for as long as it does: the
+     * areas the agent was told not to enter ({@link Conduct}). Unlike a cell given up, an excluded
+     * cell is offered again once the rule is lifted.
+     */
+    public void exclude(Predicate<Point2> cells) {
+        this.excluded = java.util.Objects.requireNonNull(cells, "cells");
     }
 
     /** Gives up the cell holding the point: it will not be offered by {@link #unseen()} again. */
