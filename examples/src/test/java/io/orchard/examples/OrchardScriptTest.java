@@ -194,4 +194,32 @@ class OrchardScriptTest {
             orchard.destroyForcibly();
         }
     }
+
+    /**
+     * A folder with sources that Maven does not build (python/, the Python package) does not make
+     * a built project look stale: it used to have every command build the whole project again.
+     */
+    @Test
+    void aBuiltProjectIsNotBuiltAgainForAFolderThatIsNotAModule() throws Exception {
+        Path root = project("#!/bin/sh\necho built >> builds\nmkdir -p examples/target && : > examples/target/classpath.txt\n",
+                true);
+        for (String module : List.of("protocol", "examples")) {
+            Files.createDirectories(root.resolve(module + "/src/main/java"));
+            Files.writeString(root.resolve(module + "/pom.xml"), "<project/>\n");
+            Files.createDirectories(root.resolve(module + "/target/classes"));
+        }
+        Files.createDirectories(root.resolve("python/src/orchard_world"));
+        Files.writeString(root.resolve("python/src/orchard_world/__init__.py"), "");
+        Files.writeString(root.resolve("pom.xml"), "<project/>\n");
+        for (int run = 0; run < 2; run++) {
+            Process orchard = start(root);
+            try {
+                assertThat(orchard.waitFor(60, TimeUnit.SECONDS)).isTrue();
+                assertThat(orchard.exitValue()).isZero();
+            } finally {
+                orchard.destroyForcibly();
+            }
+        }
+        assertThat(Files.readAllLines(root.resolve("builds"))).as("builds for two commands").hasSize(1);
+    }
 }

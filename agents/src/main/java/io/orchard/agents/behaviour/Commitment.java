@@ -1,5 +1,7 @@
 package io.orchard.agents.behaviour;
 
+import io.orchard.agents.map.CastleEstimate;
+import io.orchard.agents.map.Circle;
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.WorldMemory;
 import io.orchard.protocol.value.Nullable;
@@ -10,9 +12,10 @@ import java.util.Locale;
  * What an agent that got nowhere commits to ({@link Headway}): one plan, kept until it is carried
  * out or fails, instead of the choice that kept it standing or going back and forth. The plan is
  * the known fruit nearest by planned path (one it has not given up); else the nearest ground not
- * yet seen; else, everything having been seen, a second look at the world (what was hidden behind
- * the castle or at the edge of sight). A fruit whose way is refused is given up, so that the next
- * plan leads elsewhere.
+ * yet seen; else, everything having been seen, a second look: first where the view was poor (at
+ * the edge of sight) and around the castle (which may have hidden what lay behind it), then, asked
+ * again, everywhere. A fruit whose way is refused is given up, so that the next plan leads
+ * elsewhere.
  *
  * <pre>{@code
  * if (committed.active() || headway.stalled()) {
@@ -83,7 +86,10 @@ public final class Commitment {
         fruit = nearestByWay();
         exploring = fruit == null;
         if (exploring && explorer.target().isEmpty()) {
-            memory.coverage().lookAgain(); // seen it all and found nothing: what was missed may be anywhere
+            // Seen it all and found nothing: what was missed lies where the view was poor, or behind the castle.
+            CastleEstimate castle = memory.castle();
+            memory.coverage().lookAgain(castle.located()
+                    ? Circle.around(castle.centre().orElseThrow(), 2 * CastleEstimate.MAX_RADIUS) : null);
         }
     }
 

@@ -21,7 +21,7 @@ final class GridSearch {
     private static final double SQRT2 = Math.sqrt(2);
     private static final int MAX_EXPANSIONS = 400_000;
     /** The extra cost of a cell a rule keeps the agent out of, for an agent that stands in one and must get out. */
-    private static final double RULE_PENALTY = 20;
+    static final double RULE_PENALTY = 20;
 
     private final TerrainGrid grid;
     private final double radius;
@@ -29,7 +29,7 @@ final class GridSearch {
     private final int[] parent;
     private final int[] stamp;
     private final int[] closed;
-    private final Heap open;
+    private final CellHeap open;
     private int generation;
     private boolean escaping;
 
@@ -41,7 +41,7 @@ final class GridSearch {
         this.parent = new int[size];
         this.stamp = new int[size];
         this.closed = new int[size];
-        this.open = new Heap(size);
+        this.open = new CellHeap(size);
     }
 
     /**
@@ -102,9 +102,10 @@ final class GridSearch {
                     if (penalty < 0) {
                         continue;
                     }
-                    if (di != 0 && dk != 0 && (passable(grid.index(ci + di, ck), from, to, goalStandable, othersMask) < 0
+                    if (di != 0 && dk != 0 && !(grid.trodden[current] && grid.trodden[next])
+                            && (passable(grid.index(ci + di, ck), from, to, goalStandable, othersMask) < 0
                             || passable(grid.index(ci, ck + dk), from, to, goalStandable, othersMask) < 0)) {
-                        continue; // no corner cutting
+                        continue; // no corner cutting, but where the agent walked that very diagonal
                     }
                     float g = (float) (cost[current] + step * (1 + penalty + grid.extra[next]));
                     if (closed[next] != generation && (stamp[next] != generation || g < cost[next])) {
@@ -202,69 +203,5 @@ final class GridSearch {
             path[i] = c;
         }
         return path;
-    }
-
-    /** A binary min-heap of cells keyed by float. */
-    private static final class Heap {
-        private int[] items;
-        private float[] keys;
-        private int size;
-
-        Heap(int capacity) {
-            items = new int[Math.max(16, capacity / 8)];
-            keys = new float[items.length];
-        }
-
-        void clear() {
-            size = 0;
-        }
-
-        boolean isEmpty() {
-            return size == 0;
-        }
-
-        void push(int item, double key) {
-            if (size == items.length) {
-                items = Arrays.copyOf(items, size * 2);
-                keys = Arrays.copyOf(keys, size * 2);
-            }
-            int i = size++;
-            while (i > 0) {
-                int up = (i - 1) >>> 1;
-                if (keys[up] <= key) {
-                    break;
-                }
-                items[i] = items[up];
-                keys[i] = keys[up];
-                i = up;
-            }
-            items[i] = item;
-            keys[i] = (float) key;
-        }
-
-        int pop() {
-            int top = items[0];
-            int item = items[--size];
-            float key = keys[size];
-            int i = 0;
-            while (true) {
-                int child = 2 * i + 1;
-                if (child >= size) {
-                    break;
-                }
-                if (child + 1 < size && keys[child + 1] < keys[child]) {
-                    child++;
-                }
-                if (keys[child] >= key) {
-                    break;
-                }
-                items[i] = items[child];
-                keys[i] = keys[child];
-                i = child;
-            }
-            items[i] = item;
-            keys[i] = key;
-            return top;
-        }
     }
 }

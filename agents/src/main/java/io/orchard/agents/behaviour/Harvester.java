@@ -21,7 +21,8 @@ import java.util.function.Predicate;
  * spot within that distance, walks there with a {@link Navigator}, faces the fruit, lets a
  * {@link Gesture} bring the gripper to it (joints and the body's grasp animation), and sends the
  * grasp. A failed grasp is tried again from a better spot; after three failures, or when the fruit
- * cannot be reached, the fruit is given up for a while.
+ * cannot be reached, the fruit is given up for a while, as long as the agent stays near where it
+ * gave it up.
  */
 public final class Harvester {
 
@@ -38,6 +39,9 @@ public final class Harvester {
     /** How long a fruit stays given up, in simulated seconds. */
     public static final double GIVE_UP_SECONDS = 45;
 
+    /** How far the agent goes from where it gave a fruit up before it tries the fruit again. */
+    public static final double GIVE_UP_DISTANCE = 20;
+
     /** How much nearer than the exact reach the agent makes sure to stand, for rounding. */
     public static final double SLACK = 0.05;
 
@@ -50,7 +54,7 @@ public final class Harvester {
     private final Motor motor;
     private final Navigator navigator;
     private final PathPlanner planner;
-    private final Map<String, Double> givenUp = new HashMap<>();
+    private final Map<String, GivenUp> givenUp = new HashMap<>();
     private final List<Point2> badSpots = new ArrayList<>();
     private Gesture gesture = fruit -> { };
     private String current;
@@ -106,23 +110,36 @@ public final class Harvester {
         return canReach(fruit) && from.distance(fruit.ground()) <= reach(fruit) - SLACK;
     }
 
-    /** Whether the fruit was given up recently. */
+    /**
+     * Whether the fruit was given up recently, near here: what failed from one place may work from
+     * another, the map having grown on the way (a way the river's estimate did not know, a spot
+     * seen from the other side), so a fruit is given up only within {@value #GIVE_UP_DISTANCE}
+     * units of where it was.
+     */
     public boolean givenUp(String fruitId) {
-        Double until = givenUp.get(fruitId);
-        return until != null && until > motor.time();
+        GivenUp given = givenUp.get(fruitId);
+        if (given != null
+                && (given.until() <= motor.time() || given.where().distance(motor.position()) >= GIVE_UP_DISTANCE)) {
+            givenUp.remove(fruitId); // for good: coming back near does not give it up again
+            return false;
+        }
+        return given != null;
     }
 
-    /** Gives the fruit up for {@link #GIVE_UP_SECONDS}. */
+    /** Gives the fruit up for {@link #GIVE_UP_SECONDS}, as long as the agent stays near here. */
     public void giveUp(String fruitId) {
-        givenUp.put(fruitId, motor.time() + GIVE_UP_SECONDS);
+        givenUp.put(fruitId, new GivenUp(motor.time() + GIVE_UP_SECONDS, motor.position()));
         if (fruitId.equals(current)) {
             current = null;
         }
     }
 
     /**
-     * The fruit this agent could collect, nearest first: known, at a height it reaches, not given up,
-     * allowed by the rules a person set ({@link io.orchard.agents.map.Conduct}), passing {@code filter}.
+     * The fruit this agent could collect, nearest first: known, at a height it reaches, not given
+     * up, allowed by the rules a person set ({@link io.orchard.agents.map.Conduct}), passing
+     * {@code filter}. Nearest by the way there on the map (around the water, over a bridge, around
+     * the castle; trunks and tables aside), then in a straight line: a fruit across the river is as
+     * far as the bridge makes it.
      */
     public List<KnownFruit> candidates(Predicate<KnownFruit> filter) {
         Point2 here = motor.position();
@@ -132,7 +149,11 @@ public final class Harvester {
                 list.add(fruit);
             }
         }
-        list.sort(Comparator.comparingDouble(f -> f.ground().distance(here)));
+        if (list.size() > 1) {
+            WalkingField walks = planner.walks(here);
+            list.sort(Comparator.<KnownFruit>comparingDouble(f -> walks.to(f.ground()))
+                    .thenComparingDouble(f -> f.ground().distance(here)));
+        }
         return list;
     }
 
@@ -274,4 +295,7 @@ public final class Harvester {
         }
         return false;
     }
+
+    /** A fruit given up: until when, and where the agent stood. */
+    private record GivenUp(double until, Point2 where) {}
 }

@@ -2,17 +2,19 @@ package io.orchard.agents.behaviour;
 
 import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.WorldMemory;
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
-import java.util.HashMap;
-import java.util.Map;
 import java.util.function.Predicate;
 
 /**
- * Whether the agent is getting anywhere. Progress is a fruit collected, coming at least
- * {@value #STEP} unit nearer to a fruit it wants than it has been since its last fruit, or looking
- * at ground it has not seen. An agent that stands still, or goes back and forth over the same
- * ground, makes none: after some seconds without progress it is stalled, and should do something
- * else than what got it nowhere (see {@link Commitment}).
+ * Whether the agent is getting anywhere. Progress is a fruit collected; coming at least
+ * {@value #STEP} unit nearer (by the way there on its map, or in a straight line) to the fruit it
+ * is taken to want: the nearest of those it wants when it last made progress, kept until the next
+ * (or until it is gone); or, while it knows of no fruit it wants, looking at ground it has not
+ * seen. An agent that stands still, goes back and forth over the same ground, wanders towards one
+ * fruit while another is nearer, or looks about while a fruit it wants waits, makes none: after
+ * some seconds without progress it is stalled, and should do something else than what got it
+ * nowhere (see {@link Commitment}).
  *
  * <pre>{@code
  * Headway headway = new Headway(memory, motor, harvester::canReach, 5);
@@ -27,9 +29,11 @@ public final class Headway {
 
     private final WorldMemory memory;
     private final Motor motor;
+    private final @Nullable PathPlanner planner;
     private final Predicate<KnownFruit> wanted;
     private final double patience;
-    private final Map<String, Double> nearest = new HashMap<>();
+    private String aim;
+    private double aimedAt;
     private double seen = -1;
     private GraspStatus graspSeen;
     private double since = Double.NaN;
@@ -41,8 +45,22 @@ public final class Headway {
      * @param patience the simulated seconds without progress after which it is stalled
      */
     public Headway(WorldMemory memory, Motor motor, Predicate<KnownFruit> wanted, double patience) {
+        this(memory, motor, null, wanted, patience);
+    }
+
+    /**
+     * A watch that measures how near a fruit is by the way there on the map {@code planner} plans
+     * on (around the water, over a bridge, around the castle), as an agent that walks around
+     * obstacles comes nearer, rather than in a straight line.
+     *
+     * @param wanted   the fruit it collects (say, those its gripper reaches)
+     * @param patience the simulated seconds without progress after which it is stalled
+     */
+    public Headway(WorldMemory memory, Motor motor, @Nullable PathPlanner planner, Predicate<KnownFruit> wanted,
+                   double patience) {
         this.memory = memory;
         this.motor = motor;
+        this.planner = planner;
         this.wanted = wanted;
         this.patience = patience;
     }
@@ -67,7 +85,7 @@ public final class Headway {
     /** Starts counting afresh: something else had the agent (an instruction), so the time does not count. */
     public void reset() {
         since = motor.time();
-        nearest.clear();
+        aim = null;
     }
 
     private boolean progressed() {
@@ -75,28 +93,47 @@ public final class Headway {
         GraspStatus grasp = motor.lastGrasp();
         if (grasp != null && grasp != graspSeen && grasp.answered()) {
             graspSeen = grasp;
-            if (grasp.success()) {
-                nearest.clear(); // a new errand: nearness counts from here
-                progress = true;
-            }
+            progress = grasp.success();
+        }
+        Point2 here = motor.position();
+        KnownFruit chosen = aim == null ? null : memory.fruit(aim).filter(wanted).orElse(null);
+        if (aim != null && chosen == null) {
+            progress = true; // the fruit it was making for is gone: what it does next counts afresh
+        } else if (chosen != null && distance(here, chosen) <= aimedAt - STEP) {
+            progress = true;
+        }
+        if (chosen == null) {
+            choose(here);
         }
         double fraction = memory.coverage().fractionSeen();
         if (fraction > seen) {
-            progress |= seen >= 0;
+            // Looking about is how an agent finds fruit, not what it does while it knows of one.
+            progress |= seen >= 0 && aim == null;
             seen = fraction;
         }
-        Point2 here = motor.position();
+        if (progress) {
+            choose(here);
+        }
+        return progress;
+    }
+
+    /** The fruit it is taken to want from here on: the nearest of those it wants. */
+    private void choose(Point2 here) {
+        aim = null;
+        aimedAt = Double.POSITIVE_INFINITY;
         for (KnownFruit fruit : memory.fruit()) {
             if (!wanted.test(fruit)) {
                 continue;
             }
-            double d = here.distance(fruit.ground());
-            Double before = nearest.get(fruit.id());
-            if (before == null || d <= before - STEP) {
-                nearest.put(fruit.id(), d);
-                progress |= before != null;
+            double d = distance(here, fruit);
+            if (d < aimedAt) {
+                aim = fruit.id();
+                aimedAt = d;
             }
         }
-        return progress;
+    }
+
+    private double distance(Point2 here, KnownFruit fruit) {
+        return planner == null ? here.distance(fruit.ground()) : planner.walks(here).to(fruit.ground());
     }
 }

@@ -81,6 +81,21 @@ public final class Navigator {
         return route == null ? List.of() : List.copyOf(route.subList(index, route.size()));
     }
 
+    /**
+     * Stops where the agent stands and turns it to face {@code point}, to look at it: the next
+     * perception shows what lies that way. Forgets the current target.
+     */
+    public void face(Point2 point) {
+        reset();
+        if (motor.walking()) {
+            motor.halt();
+        }
+        double facing = Bearings.headingTowards(motor.position(), point);
+        if (Math.abs(Bearings.normalise(facing - motor.heading())) > 0.02) {
+            motor.turnTo(facing);
+        }
+    }
+
     /** Forgets the current target (without stopping a move under way). */
     public void reset() {
         target = null;

@@ -40,6 +40,7 @@ public final class PathPlanner {
     private final WorldMemory memory;
     private final TerrainGrid grid;
     private final GridSearch search;
+    private final WalkingField walks;
     private final double radius;
 
     /** A planner for the agent whose memory this is (the memory knows its body radius). */
@@ -48,6 +49,12 @@ public final class PathPlanner {
         this.grid = new TerrainGrid(memory);
         this.radius = memory.radius();
         this.search = new GridSearch(grid, radius);
+        this.walks = new WalkingField(grid);
+    }
+
+    /** The walking distances from {@code from} to everywhere, on the map less trunks and tables. */
+    WalkingField walks(Point2 from) {
+        return walks.from(from);
     }
 
     /** A path from {@code from} to {@code to}: the points to walk through, ending at {@code to}; empty when there is none. */

@@ -4,6 +4,7 @@ import io.orchard.agents.map.CastleEstimate;
 import io.orchard.agents.map.Circle;
 import io.orchard.agents.map.Conduct;
 import io.orchard.agents.map.KnownBridge;
+import io.orchard.agents.map.KnownFruit;
 import io.orchard.agents.map.KnownObstacle;
 import io.orchard.agents.map.LearnedBlock;
 import io.orchard.agents.map.RiverMap;
@@ -20,10 +21,12 @@ import java.util.Arrays;
  * a table, the water away from a bridge, the castle's likely core, or something a rejected move
  * ran into). Where the agent has stood ({@link Trail}) is never blocked by the layers that are
  * guesses (the water, the castle, what refused moves taught): it stood there, so a path can lead
- * it out the way it came. Rebuilt from the memory when its terrain changes; the river layer, the
- * costliest, only when the river model changed. A separate layer marks the cells the rules a
- * person set keep the agent out of ({@link io.orchard.agents.map.Conduct}), widened by a cell so
- * that a path planned on the grid keeps out of them point by point.
+ * it out the way it came. Nor, by the estimates of the water and the castle, is the ground around
+ * a fruit it has seen, which lies on clear ground with room beside it to be grasped from. Rebuilt
+ * from the memory when its terrain changes; the river layer, the costliest, only when the river
+ * model changed. A separate layer marks the cells the rules a person set keep the agent out of
+ * ({@link io.orchard.agents.map.Conduct}), widened by a cell so that a path planned on the grid
+ * keeps out of them point by point.
  */
 final class TerrainGrid {
 
@@ -39,6 +42,12 @@ final class TerrainGrid {
     static final double WATER_MARGIN = 0.4;
     static final double CASTLE_CORE = CastleEstimate.CORE_RADIUS + 2;
     static final double CANDIDATE_CORE = 3;
+    /**
+     * How far around a fruit seen the ground is taken to be clear: a fruit lies out of the water
+     * and the castle, with ground beside it to grasp it from (the world generator sees to it),
+     * within reach of any gripper.
+     */
+    static final double FRUIT_GROUND = 2;
 
     private final WorldMemory memory;
     private final double radius;
@@ -51,10 +60,21 @@ final class TerrainGrid {
     final float[] extra;
     /** The layers that are not circles (water, castle, learned blocks, edges): what straight checks sample. */
     final byte[] terrain;
+    /** The cells the agent has stood in: A* steps diagonally from one to another past blocked corners, as the agent did. */
+    final boolean[] trodden;
+    /** The terrain layer and the extra costs as they were at the last change, to tell whether they changed. */
+    private final byte[] before;
+    private final float[] extraBefore;
     private final byte[] wet;
     private final byte[] edge;
     /** The cells the rules keep the agent out of: nonzero where it may not walk, unless it stands in one. */
     final byte[] avoided;
+    private final byte[] avoidedBefore;
+    /**
+     * Grows whenever the terrain layer, the extra costs or the cells the rules keep the agent out of
+     * change: what searches that ignore trunks and tables key on.
+     */
+    long edition;
     private long builtVersion = -1;
     private long wetVersion = -1;
 
@@ -67,9 +87,13 @@ final class TerrainGrid {
         this.cells = new byte[nx * nz];
         this.extra = new float[nx * nz];
         this.terrain = new byte[nx * nz];
+        this.trodden = new boolean[nx * nz];
+        this.before = new byte[nx * nz];
+        this.extraBefore = new float[nx * nz];
         this.wet = new byte[nx * nz];
         this.edge = new byte[nx * nz];
         this.avoided = new byte[nx * nz];
+        this.avoidedBefore = new byte[nx * nz];
         edges();
     }
 
@@ -90,15 +114,27 @@ final class TerrainGrid {
         }
         Arrays.fill(extra, 0f);
         castle();
+        // The estimates may be wrong around a fruit; a refused move is not, and blocks what it ran into.
+        for (KnownFruit fruit : memory.fruit()) {
+            clear(fruit.ground(), FRUIT_GROUND);
+        }
         for (LearnedBlock block : memory.learned()) {
             learned(block);
         }
+        Arrays.fill(trodden, false);
         memory.trail().forEach(this::trodden);
+        rules();
+        if (!Arrays.equals(terrain, before) || !Arrays.equals(extra, extraBefore)
+                || !Arrays.equals(avoided, avoidedBefore)) {
+            edition++;
+            System.arraycopy(terrain, 0, before, 0, terrain.length);
+            System.arraycopy(extra, 0, extraBefore, 0, extra.length);
+            System.arraycopy(avoided, 0, avoidedBefore, 0, avoided.length);
+        }
         System.arraycopy(terrain, 0, cells, 0, terrain.length);
         for (KnownObstacle obstacle : memory.obstacles()) {
             circle(obstacle.centre(), obstacle.blockRadius() + obstacle.margin());
         }
-        rules();
     }
 
     /** Whether the rules keep the agent out of the cell holding this point. */
@@ -180,9 +216,27 @@ final class TerrainGrid {
         return bounds.minZ() + (index / nx + 0.5) * CELL;
     }
 
+    /** Ground known to be clear around a point: walkable at a cost, whatever the guesses say, unless beyond the edge. */
+    private void clear(Point2 centre, double reach) {
+        int i0 = column(centre.x() - reach);
+        int i1 = column(centre.x() + reach);
+        int k0 = row(centre.z() - reach);
+        int k1 = row(centre.z() + reach);
+        for (int k = k0; k <= k1; k++) {
+            for (int i = i0; i <= i1; i++) {
+                int index = index(i, k);
+                if (terrain[index] == BLOCKED && edge[index] != BLOCKED
+                        && Math.hypot(cx(index) - centre.x(), cz(index) - centre.z()) <= reach) {
+                    terrain[index] = NEAR;
+                }
+            }
+        }
+    }
+
     /** Ground the agent stood on: walkable at a cost, whatever the guesses say, unless beyond the world's edge. */
     private void trodden(Point2 p) {
         int index = indexOf(p);
+        trodden[index] = true;
         if (terrain[index] == BLOCKED && edge[index] != BLOCKED) {
             terrain[index] = NEAR;
         }

@@ -252,8 +252,9 @@ final class Rulebook {
     }
 
     /**
-     * The other bank ({@code beyond}) or this one, from the bank the agent stood on when told, or, when
-     * it did not know the river yet, the first bank it knows it stands on.
+     * The other bank ({@code beyond}, with the water between, a bridge's deck included) or this one,
+     * from the bank the agent stood on when told, or, when it did not know the river yet, the first
+     * bank it knows it stands on.
      */
     private Predicate<Point2> bank(boolean beyond) {
         RiverMap river = kit.memory.river();
@@ -266,6 +267,11 @@ final class Rulebook {
                 }
             }
             RiverMap.Side theirs = river.side(p.x(), p.z(), 0);
+            if (theirs == RiverMap.Side.WATER) {
+                // A bridge's deck is over the water: on it, the agent is no longer on its bank, and the
+                // far bank may lie beyond the river as the memory knows it so far.
+                return beyond;
+            }
             return (theirs == RiverMap.Side.LOW || theirs == RiverMap.Side.HIGH) && (theirs != mine[0]) == beyond;
         };
     }

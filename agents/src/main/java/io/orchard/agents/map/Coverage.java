@@ -1,6 +1,7 @@
 package io.orchard.agents.map;
 
 import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
@@ -10,8 +11,9 @@ import java.util.function.Predicate;
 
 /**
  * Which parts of the world the agent has looked at: a grid of {@value #CELL}-unit cells, each seen
- * once its centre has been in the agent's view cone well within range. Exploring means heading
- * for cells not yet seen; a cell the agent could not reach can be given up.
+ * once its centre has been in the agent's view cone well within range, and not behind the castle
+ * where the agent knows it stands. Exploring means heading for cells not yet seen; a cell the
+ * agent could not reach can be given up.
  *
  * <p>Not thread-safe.
  */
@@ -23,12 +25,17 @@ public final class Coverage {
     /** The share of the sight range within which a cell counts as seen. */
     public static final double RANGE_SHARE = 0.85;
 
+    private static final double HALF_DIAGONAL = CELL * Math.sqrt(0.5);
+
     private final Bounds bounds;
     private final int nx;
     private final int nz;
     private final boolean[] seen;
     private final boolean[] givenUp;
+    /** Cells seen whole at once, within range and the field of view, so that nothing in them was missed. */
+    private final boolean[] wellSeen;
     private int seenCount;
+    private boolean lookedAgain;
     private Predicate<Point2> excluded = cell -> false;
 
     /** An empty coverage of the world's bounds. */
@@ -38,10 +45,20 @@ public final class Coverage {
         this.nz = Math.max(1, (int) Math.ceil(bounds.depth() / CELL));
         this.seen = new boolean[nx * nz];
         this.givenUp = new boolean[nx * nz];
+        this.wellSeen = new boolean[nx * nz];
     }
 
     /** Marks what an agent at {@code from} with this heading and sight sees. */
     public void look(Point2 from, double heading, Sight sight) {
+        look(from, heading, sight, null);
+    }
+
+    /**
+     * Marks what an agent at {@code from} with this heading and sight sees, nothing of it through
+     * {@code hiding}: a disc the castle surely covers, when the agent knows where it stands (nothing
+     * is seen through the castle).
+     */
+    public void look(Point2 from, double heading, Sight sight, @Nullable Circle hiding) {
         double range = sight.range() * RANGE_SHARE;
         double half = sight.fieldOfView() / 2;
         int i0 = Math.max(0, (int) Math.floor((from.x() - range - bounds.minX()) / CELL));
@@ -51,15 +68,21 @@ public final class Coverage {
         for (int k = k0; k <= k1; k++) {
             for (int i = i0; i <= i1; i++) {
                 int index = k * nx + i;
-                if (seen[index]) {
+                if (wellSeen[index]) {
                     continue;
                 }
                 Point2 centre = centre(index);
                 double distance = from.distance(centre);
-                if (distance <= range && (distance < CELL
-                        || Math.abs(Bearings.bearing(from, heading, centre)) <= half)) {
-                    seen[index] = true;
-                    seenCount++;
+                double bearing = Math.abs(Bearings.bearing(from, heading, centre));
+                if (distance <= range && (distance < CELL || bearing <= half)
+                        && (hiding == null || hiding.distanceToSegment(from, centre) > hiding.radius())) {
+                    if (!seen[index]) {
+                        seen[index] = true;
+                        seenCount++;
+                    }
+                    // All of the cell in sight: within range, and inside the field of view from edge to edge.
+                    wellSeen[index] = distance > HALF_DIAGONAL && distance + HALF_DIAGONAL <= sight.range()
+                            && bearing + Math.asin(HALF_DIAGONAL / distance) <= half;
                 }
             }
         }
@@ -91,6 +114,28 @@ public final class Coverage {
     }
 
     /**
+     * How many cells neither seen, nor given up, nor excluded have their centre within
+     * {@code radius} of {@code point}.
+     */
+    public int unseenWithin(Point2 point, double radius) {
+        int i0 = Math.max(0, (int) Math.floor((point.x() - radius - bounds.minX()) / CELL));
+        int i1 = Math.min(nx - 1, (int) Math.floor((point.x() + radius - bounds.minX()) / CELL));
+        int k0 = Math.max(0, (int) Math.floor((point.z() - radius - bounds.minZ()) / CELL));
+        int k1 = Math.min(nz - 1, (int) Math.floor((point.z() + radius - bounds.minZ()) / CELL));
+        int count = 0;
+        for (int k = k0; k <= k1; k++) {
+            for (int i = i0; i <= i1; i++) {
+                int index = k * nx + i;
+                if (!seen[index] && !givenUp[index] && point.distance(centre(index)) <= radius
+                        && !excluded.test(centre(index))) {
+                    count++;
+                }
+            }
+        }
+        return count;
+    }
+
+    /**
      * Leaves out of {@link #unseen()} the cells whose centre this excludes, for as long as it does: the
      * areas the agent was told not to enter ({@link Conduct}). Unlike a cell given up, an excluded
      * cell is offered again once the rule is lifted.
@@ -108,13 +153,36 @@ public final class Coverage {
     }
 
     /**
-     * Forgets what was seen and given up, so that every cell is offered again: for a second look
-     * at a world that was seen whole without finding what was sought.
+     * For a second look at a world that was seen whole without finding what was sought: forgets
+     * what was given up, and the cells never seen whole at once (seen only at the edge of the
+     * range or of the field of view, where something may have been missed), so that those are
+     * offered again. Asked again, or when every cell was seen whole, it forgets everything.
      */
     public void lookAgain() {
-        Arrays.fill(seen, false);
+        lookAgain(null);
+    }
+
+    /**
+     * As {@link #lookAgain()}, forgetting too the cells within {@code shadow}: around the castle,
+     * which may have hidden them from where the agent looked before it knew where the castle stood.
+     */
+    public void lookAgain(@Nullable Circle shadow) {
         Arrays.fill(givenUp, false);
+        boolean[] keep = new boolean[seen.length];
+        boolean anyForgotten = false;
+        for (int i = 0; i < seen.length; i++) {
+            Point2 centre = centre(i);
+            keep[i] = wellSeen[i] && (shadow == null || !shadow.contains(centre.x(), centre.z()));
+            anyForgotten |= !keep[i];
+        }
+        boolean everything = lookedAgain || !anyForgotten;
         seenCount = 0;
+        for (int i = 0; i < seen.length; i++) {
+            seen[i] = !everything && keep[i];
+            wellSeen[i] = seen[i];
+            seenCount += seen[i] ? 1 : 0;
+        }
+        lookedAgain = !everything;
     }
 
     private Point2 centre(int index) {

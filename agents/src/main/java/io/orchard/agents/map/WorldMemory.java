@@ -158,7 +158,8 @@ public final class WorldMemory {
             castle.observe(self, castleSeen.sector());
         }
         excludeCastle(self);
-        coverage.look(self, facing, sight);
+        coverage.look(self, facing, sight, castle.located()
+                ? Circle.around(castle.centre().orElseThrow(), CastleEstimate.CORE_RADIUS) : null);
     }
 
     /**
@@ -370,6 +371,7 @@ public final class WorldMemory {
         if (before == null) {
             fruitVersion++;
             castle.exclude(seen.position().onGround(), CastleEstimate.CORE_RADIUS);
+            terrainVersion++; // the ground around it is land, whatever the guesses say
         }
     }
 

@@ -48,6 +48,12 @@ public final class Bunny extends AgentController {
     private static final double HUNGRY_SECONDS = 8;
     private static final double SHUN_SECONDS = 5;
     private static final double BORED_SECONDS = 4;
+    /**
+     * How long the bunny's rules may get it nowhere before it commits to a plan: less than the
+     * others' {@link Skills#PATIENCE}, as its rules wander without a map where the others' layers,
+     * goals and plans already head somewhere.
+     */
+    private static final double PATIENCE = 3;
 
     private Steering steering;
     private Skills skills;
@@ -90,7 +96,7 @@ public final class Bunny extends AgentController {
     @Override
     protected void onRegistered() {
         steering = new Steering(bodyInForce().radius(), welcome().bounds());
-        skills = new Skills(memory(), motor(), planner(), random());
+        skills = new Skills(memory(), motor(), planner(), random(), PATIENCE);
         skills.harvester.gesture(fruit -> play(name() + "TSGrasp", 1.5));
     }
 

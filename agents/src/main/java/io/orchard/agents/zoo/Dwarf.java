@@ -141,13 +141,10 @@ public final class Dwarf extends AgentController {
     }
 
     private boolean grab() {
-        for (KnownFruit fruit : skills.harvester.candidates(f -> true)) {
-            if (skills.harvester.inReach(fruit, position())) {
-                target = fruit;
-                skills.harvester.collect(fruit);
-                return true;
-            }
-            break; // candidates come nearest first
+        for (KnownFruit fruit : skills.harvester.candidates(f -> skills.harvester.inReach(f, position()))) {
+            target = fruit;
+            skills.harvester.collect(fruit);
+            return true;
         }
         return false;
     }

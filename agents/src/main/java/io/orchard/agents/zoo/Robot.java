@@ -3,7 +3,6 @@ package io.orchard.agents.zoo;
 import io.orchard.agents.AgentBody;
 import io.orchard.agents.AgentController;
 import io.orchard.agents.Perception;
-import io.orchard.agents.behaviour.Explorer;
 import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.Coverage;
@@ -45,6 +44,8 @@ public final class Robot extends AgentController {
     private static final int TOUR_CANDIDATES = 6;
     private static final int TOUR_LENGTH = 4;
     private static final double REPLAN_SECONDS = 8;
+    /** The extra cost, in units, of a frontier across the river: the agent's own bank comes first. */
+    private static final double ACROSS_THE_RIVER = 60;
 
     /** A step of the robot's plan. */
     private sealed interface Step permits Fetch, Survey {}
@@ -194,7 +195,7 @@ public final class Robot extends AgentController {
                 double distance = here.distance(cell);
                 RiverMap.Side side = river.side(cell.x(), cell.z(), 0);
                 if (mySide != RiverMap.Side.UNKNOWN && side != RiverMap.Side.UNKNOWN && side != mySide) {
-                    distance += Explorer.ACROSS_THE_RIVER;
+                    distance += ACROSS_THE_RIVER;
                 }
                 double score = gain / (distance + 10);
                 if (score > bestScore) {

@@ -29,6 +29,11 @@ final class Skills {
     final Commitment commitment;
 
     Skills(WorldMemory memory, Motor motor, PathPlanner planner, RandomGenerator random) {
+        this(memory, motor, planner, random, PATIENCE);
+    }
+
+    /** Skills for an agent that commits to a plan after {@code patience} seconds without progress. */
+    Skills(WorldMemory memory, Motor motor, PathPlanner planner, RandomGenerator random, double patience) {
         this.memory = memory;
         this.motor = motor;
         this.planner = planner;
@@ -36,7 +41,8 @@ final class Skills {
         this.harvester = new Harvester(memory, motor, navigator);
         this.explorer = new Explorer(memory, planner);
         this.wanderer = new Wanderer(memory, random);
-        this.headway = new Headway(memory, motor, harvester::canReach, PATIENCE);
+        this.headway = new Headway(memory, motor, planner, f -> harvester.canReach(f) && !harvester.givenUp(f.id()),
+                patience);
         this.commitment = new Commitment(memory, motor, harvester, explorer);
     }
 

@@ -74,6 +74,23 @@ class RulebookTest {
                 + "the river; the nearest place I can stand that way is 19 metres north, and I'll go there.");
     }
 
+    /**
+     * The Bunny, told so, walked onto a bridge and off it onto the far bank in one move: the motor's
+     * guard let it, as the deck was water, not the other bank, and the far end not yet known as a bank.
+     */
+    @Test
+    void stayingOnThisSideKeepsOffTheWaterAndTheBridgesAsWellAsTheOtherBank() {
+        Errands errands = errands();
+
+        tell(errands, "stay on this side of the river");
+
+        assertThat(memory.conduct().forbids(new Point2(0, -10))).as("this bank").isFalse();
+        assertThat(memory.conduct().forbids(new Point2(0, -35))).as("the water, where a bridge's deck lies").isTrue();
+        assertThat(memory.conduct().forbids(new Point2(0, -45))).as("the other bank, 10 units on").isTrue();
+        assertThat(memory.conduct().cut(new Point2(0, 0), new Point2(0, -45)).z()).as("the motor's guard stops at the shore")
+                .isBetween(-31.0, -28.0);
+    }
+
     @Test
     void fruitRulesLeaveTheHarvesterOnlyWhatTheyAllowAndRefuseAnErrandForTheRest() {
         Errands errands = errands();
