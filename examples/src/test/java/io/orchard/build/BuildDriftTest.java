@@ -300,8 +300,8 @@ class BuildDriftTest {
             Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
 
             assertThat(driftsAfterEdit(check, "bom/build.gradle.kts", "        api(project(\":viewer\"))\n", ""))
-                    .containsExactly(new Drift("bom managed modules", "agents, cli, protocol, server, viewer, web",
-                            "agents, cli, protocol, server, web"));
+                    .containsExactly(new Drift("bom managed modules", "agents, cli, cluster, protocol, server, viewer, web",
+                            "agents, cli, cluster, protocol, server, web"));
         }
 
         @Test

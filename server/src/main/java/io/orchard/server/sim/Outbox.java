@@ -89,6 +89,13 @@ final class Outbox {
         cause = session;
     }
 
+    /** Names a client in the record as another part of the world named it: by its first agent's name. */
+    void labelled(ClientSession session, String label) {
+        if (session.role() == Role.AGENT) {
+            labels.put(session.id(), label);
+        }
+    }
+
     /** How the record names a client. */
     String label(ClientSession session) {
         return session.role() == Role.VIEWER ? "viewer" : labels.getOrDefault(session.id(), "agent");

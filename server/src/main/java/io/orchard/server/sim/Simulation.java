@@ -426,6 +426,19 @@ public final class Simulation implements Inbox {
         registrations.departed.reserveFor(time);
     }
 
+    /**
+     * Every agent in the world, as it is now, with the session that drives it: for a program that
+     * hands a game that has started to parts of a world ({@link PartialSimulation}). Call on the
+     * simulation's thread.
+     */
+    public List<PartialSimulation.Driven> handOver() {
+        List<PartialSimulation.Driven> all = new ArrayList<>();
+        for (Agent agent : agents.values()) {
+            all.add(new PartialSimulation.Driven(agent.handover(), agent.owner, outbox.label(agent.owner)));
+        }
+        return all;
+    }
+
     /** Names of the agents of a restored game that are still waiting for their controllers. */
     public List<String> waitingAgents() {
         return registrations.waiting().stream().map(Checkpoint.SavedAgent::name).toList();
