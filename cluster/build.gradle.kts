@@ -15,6 +15,8 @@ dependencies {
     api(project(":server"))
     implementation(project(":protocol"))
     implementation(libs.pekko.cluster.sharding.typed)
+    // The cluster's messages between nodes, as JSON: the Jackson the protocol brings.
+    implementation(libs.jackson.databind)
     implementation(libs.slf4j.api)
 
     testImplementation(libs.logback.classic)

@@ -291,7 +291,8 @@ class BuildDriftTest {
 
             assertThat(drifts).extracting(Drift::item)
                     .containsExactlyInAnyOrder("agents pom licence", "bom pom licence", "cli pom licence",
-                            "protocol pom licence", "server pom licence", "viewer pom licence", "web pom licence");
+                            "cluster pom licence", "protocol pom licence", "server pom licence", "viewer pom licence",
+                            "web pom licence");
             assertThat(drifts).extracting(Drift::gradle).allMatch(licence -> licence.startsWith("MIT "));
         }
 

@@ -5,9 +5,13 @@ import io.orchard.cluster.order.KeyedLines;
 import io.orchard.cluster.order.LineKey;
 import io.orchard.cluster.order.LineKey.Step;
 import io.orchard.cluster.order.Merge;
+import io.orchard.cluster.order.ProxySession;
+import io.orchard.cluster.order.SessionRef;
+import io.orchard.cluster.parcel.OwnedAgent;
 import io.orchard.cluster.parcel.Parcel;
 import io.orchard.cluster.parcel.ParcelGrid;
 import io.orchard.cluster.parcel.ParcelId;
+import io.orchard.cluster.parcel.PathQuery;
 import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
@@ -16,12 +20,12 @@ import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.message.KeepAliveMessage;
+import io.orchard.protocol.message.MoveMessage;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ScoreUpdateMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
-import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.PerceivedAgent;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
@@ -44,19 +48,19 @@ import io.orchard.server.world.Fruit;
 import io.orchard.server.world.World;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.function.Function;
 
 /**
- * A game whose world is cut into parcels, each simulated on its own ({@link Parcel}), in one JVM:
- * the same game the single server's {@link Simulation} plays, recorded and sent byte for byte as it
- * does, with the parcels' work in between. It steps as a simulation does ({@link #beginTick()},
- * {@link #endTick()}, {@link #applyNow()}); one thread owns it, others hand it events through its
- * {@link Inbox} methods.
+ * A game whose world is cut into parcels, each simulated on its own ({@link Parcel}): the same game
+ * the single server's {@link Simulation} plays, recorded and sent byte for byte as it does, with the
+ * parcels' work in between. It steps as a simulation does ({@link #beginTick()}, {@link #endTick()},
+ * {@link #applyNow()}); one thread owns it, others hand it events through its {@link Inbox} methods.
+ * Where the parcels are, in this JVM or on the nodes of a cluster, is the {@link Parcels}' affair.
  *
  * <p>Before the game starts, a plain simulation (the lobby) takes the registrations and setups and
  * settles where agents stand, exactly as one server does; at the start its agents go to the parcels
@@ -77,10 +81,13 @@ public final class SplitGame implements Inbox {
     private final Simulation lobby;
     private final Merge merge;
     private final ParcelGrid grid;
+    private final Function<ParcelGrid, Parcels> parcelsOf;
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
-    private final Map<ParcelId, Parcel> parcels = new TreeMap<>();
+    private Parcels parcels;
     /** Every agent's controller, by the agent's name: the order in which clients' messages apply. */
-    private final Map<String, ClientSession> owners = new TreeMap<>();
+    private final Map<String, SessionRef> owners = new TreeMap<>();
+    /** Every agent as the parcels last said it was. */
+    private final Map<String, AgentHandover> states = new TreeMap<>();
     private final Map<String, ParcelId> where = new HashMap<>();
     private final Map<Long, String> labels = new HashMap<>();
     private final Map<String, ParcelId> fruitParcels = new HashMap<>();
@@ -88,7 +95,6 @@ public final class SplitGame implements Inbox {
     private final Scoreboard scores = new Scoreboard();
     private final KeyedLines own = new KeyedLines();
     private final Counters counts = new Counters();
-    private final List<String> taken = new ArrayList<>();
     private boolean split;
     private Phase phase = Phase.WAITING;
     private long tick;
@@ -96,25 +102,37 @@ public final class SplitGame implements Inbox {
     private int fruitLeft;
 
     /**
-     * A game of {@code world}, made from {@code seed}, cut into parcels of {@code parcelSize} units,
-     * recorded to {@code recorder}. The parcels' halos reach as far as the longest sight
-     * {@code config} allows.
+     * A game of {@code world}, made from {@code seed}, cut into parcels of {@code parcelSize} units
+     * in this JVM, recorded to {@code recorder}.
      */
     public SplitGame(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
                      List<GameListener> listeners, double parcelSize) {
-        this(world, config, seed, serverVersion, recorder, listeners, parcelSize, (name, radius) -> null);
+        this(world, config, seed, serverVersion, recorder, listeners, parcelSize, (name, radius) -> null,
+                grid -> new LocalParcels(grid, world, config));
     }
 
-    /** As the other constructor, asking {@code placement} first where each agent stands at first. */
+    /**
+     * A game of {@code world}, made from {@code seed}, cut into parcels of {@code parcelSize} units
+     * that {@code parcelsOf} makes for the grid, recorded to {@code recorder}; {@code placement} is
+     * asked first where each agent stands at first. The parcels' halos reach as far as the longest
+     * sight {@code config} allows.
+     */
     public SplitGame(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
-                     List<GameListener> listeners, double parcelSize, Placement placement) {
+                     List<GameListener> listeners, double parcelSize, Placement placement,
+                     Function<ParcelGrid, Parcels> parcelsOf) {
         this.world = world;
         this.config = config;
         this.listeners = List.copyOf(listeners);
         this.merge = new Merge(recorder);
-        double halo = Math.max(config.bodyLimits().maxRange(), PartialSimulation.touchingReach(config));
-        this.grid = new ParcelGrid(world.bounds(), parcelSize, halo);
+        this.grid = grid(world, config, parcelSize);
+        this.parcelsOf = parcelsOf;
         this.lobby = new Simulation(world, config, seed, serverVersion, recorder, listeners, placement);
+    }
+
+    /** The parcels of a game of {@code world} in parcels of {@code size}, their halos as long as sight may be. */
+    public static ParcelGrid grid(World world, SimulationConfig config, double size) {
+        return new ParcelGrid(world.bounds(), size, Math.max(config.bodyLimits().maxRange(),
+                PartialSimulation.touchingReach(config)));
     }
 
     // ---- Inbox: any thread -------------------------------------------------------------------
@@ -178,47 +196,24 @@ public final class SplitGame implements Inbox {
             fruitPlaces.put(fruit.id(), fruit.position());
         }
         fruitLeft = world.fruitCount();
-        GameListener taking = new GameListener() {
-            @Override
-            public void fruitEaten(String agent, String fruit, FruitKind kind, double at) {
-                taken(agent, fruit, kind, at);
-            }
-        };
-        for (ParcelId id : grid.all()) {
-            parcels.put(id, new Parcel(id, world.withOwnFruit(), config, taking, elsewhere(id)));
-        }
+        parcels = parcelsOf.apply(grid);
+        Map<ParcelId, List<OwnedAgent>> homes = new TreeMap<>();
         for (Driven driven : lobby.handOver()) {
             String name = driven.agent().name();
-            owners.put(name, driven.owner());
+            owners.put(name, SessionRef.of(driven.owner()));
             labels.put(driven.owner().id(), driven.label());
+            states.put(name, driven.agent());
             ParcelId home = grid.of(driven.agent().position());
             where.put(name, home);
-            parcels.get(home).own(driven);
+            homes.computeIfAbsent(home, id -> new ArrayList<>()).add(owned(driven.agent()));
         }
+        parcels.own(homes);
         refreshGhosts();
     }
 
-    /** Asks the parcels along a walker's path for their first contact, when the path leaves the halo. */
-    private PartialSimulation.Elsewhere elsewhere(ParcelId asking) {
-        return (walker, from, to, radius) -> {
-            double margin = radius + config.bodyLimits().maxRadius();
-            double minX = Math.min(from.x(), to.x()) - margin;
-            double minZ = Math.min(from.z(), to.z()) - margin;
-            double maxX = Math.max(from.x(), to.x()) + margin;
-            double maxZ = Math.max(from.z(), to.z()) + margin;
-            if (grid.holds(asking, minX, minZ, maxX, maxZ)) {
-                return null;
-            }
-            counts.pathsBeyondHalo++;
-            FirstContact first = null;
-            for (ParcelId id : grid.meeting(minX, minZ, maxX, maxZ)) {
-                FirstContact contact = id.equals(asking) ? null : parcels.get(id).firstAlong(walker, from, to, radius);
-                if (contact != null && contact.before(first)) {
-                    first = contact;
-                }
-            }
-            return first;
-        };
+    private OwnedAgent owned(AgentHandover agent) {
+        SessionRef owner = owners.get(agent.name());
+        return new OwnedAgent(agent, owner, labels.get(owner.id()));
     }
 
     /** The first half of a tick: the clock and the perceptions asked for. */
@@ -229,12 +224,9 @@ public final class SplitGame implements Inbox {
         own.cause(LineKey.of(tick, Step.TICK));
         own.sent(tick, time, Audience.ALL, null, new TickMessage(tick, time));
         List<KeyedLine> lines = new ArrayList<>(own.take());
-        for (Parcel parcel : parcels.values()) {
-            parcel.perceive(tick, time);
-            List<KeyedLine> said = parcel.takeLines();
-            countSightings(said);
-            lines.addAll(said);
-        }
+        List<KeyedLine> perceived = parcels.perceive(tick, time);
+        countSightings(perceived);
+        lines.addAll(perceived);
         merge.write(lines);
         merge.flush();
     }
@@ -247,19 +239,19 @@ public final class SplitGame implements Inbox {
         }
         List<Event> events = new ArrayList<>();
         inbox.drainTo(events);
+        Map<ParcelId, List<Parcel.Act>> acts = new TreeMap<>();
         for (Map.Entry<LineKey, Event> applied : inClientOrder(events).entrySet()) {
-            apply(applied.getKey(), applied.getValue());
+            apply(applied.getKey(), applied.getValue(), acts);
         }
         List<KeyedLine> lines = new ArrayList<>(own.take());
-        List<Parcel.KeyedClaim> claims = new ArrayList<>();
-        for (Parcel parcel : parcels.values()) {
-            claims.addAll(parcel.takeClaims());
-            lines.addAll(parcel.takeLines());
-        }
+        Parcels.Applied applied = parcels.apply(tick, time, acts, pathsBeyondHalos(acts));
+        lines.addAll(applied.lines());
+        refreshStates();
         refreshGhosts(); // as the tick's actions left them: facing and walking
-        boolean collected = grasp(claims, lines);
+        boolean collected = grasp(applied.claims(), lines);
         double next = (tick + 1) * config.tickSeconds();
         walk(next, lines);
+        refreshStates();
         handOver();
         refreshGhosts();
         if (collected) {
@@ -296,7 +288,8 @@ public final class SplitGame implements Inbox {
         return ordered;
     }
 
-    private void apply(LineKey key, Event event) {
+    /** Takes one event of the tick: a message about an own agent goes to its parcel, the rest is answered here. */
+    private void apply(LineKey key, Event event, Map<ParcelId, List<Parcel.Act>> acts) {
         ClientSession session = event.session();
         if (event.connected() || event.gone()) {
             outOfTick(event);
@@ -310,7 +303,7 @@ public final class SplitGame implements Inbox {
         if (message instanceof EndTurnMessage) {
             own.accepted(tick, time, label(session), message);
         } else if (message instanceof AgentMessage about) {
-            ClientSession owner = owners.get(about.agent());
+            SessionRef owner = owners.get(about.agent());
             if (session.role() != Role.AGENT) {
                 refuse(session, message, ErrorCode.WRONG_ROLE, "a viewer cannot drive agents");
             } else if (owner == null) {
@@ -319,13 +312,14 @@ public final class SplitGame implements Inbox {
                 refuse(session, message, ErrorCode.NOT_YOUR_AGENT, "agent '" + about.agent()
                         + "' belongs to another connection");
             } else {
-                parcels.get(where.get(about.agent())).act(key, tick, time, session, message);
+                acts.computeIfAbsent(where.get(about.agent()), id -> new ArrayList<>())
+                        .add(new Parcel.Act(key, SessionRef.of(session), message));
             }
         } else if (message instanceof InstructionMessage instruction) {
             own.accepted(tick, time, label(session), message);
-            ClientSession owner = owners.get(instruction.agent());
+            SessionRef owner = owners.get(instruction.agent());
             if (owner == null) {
-                say(session, new ErrorMessage(message.seq(), ErrorCode.UNKNOWN_AGENT, "no agent named '"
+                say(SessionRef.of(session), new ErrorMessage(message.seq(), ErrorCode.UNKNOWN_AGENT, "no agent named '"
                         + instruction.agent() + "' in the world"));
             } else {
                 say(owner, instruction);
@@ -338,13 +332,48 @@ public final class SplitGame implements Inbox {
 
     private void refuse(ClientSession session, ClientMessage message, ErrorCode code, String why) {
         own.accepted(tick, time, label(session), message);
-        say(session, new ErrorMessage(message.seq(), code, why));
+        say(SessionRef.of(session), new ErrorMessage(message.seq(), code, why));
     }
 
     /** Sends a message to one client, in its place among the coordinator's lines. */
-    private void say(ClientSession to, ServerMessage message) {
-        own.sent(tick, time, Audience.CLIENT, label(to), message);
-        new io.orchard.cluster.order.ProxySession(to, own).send(message);
+    private void say(SessionRef to, ServerMessage message) {
+        own.sent(tick, time, Audience.CLIENT, labels.getOrDefault(to.id(), "agent"), message);
+        new ProxySession(to, own).send(message);
+    }
+
+    /**
+     * The first contacts on the paths of this tick's moves that leave their parcel's halo, from the
+     * parcels along them; every agent stands where it stood at the start of the tick until it walks.
+     */
+    private Map<PathQuery, FirstContact> pathsBeyondHalos(Map<ParcelId, List<Parcel.Act>> acts) {
+        Map<ParcelId, List<PathQuery>> asks = new TreeMap<>();
+        List<PathQuery> beyond = new ArrayList<>();
+        double maxRadius = config.bodyLimits().maxRadius();
+        acts.forEach((home, own) -> {
+            for (Parcel.Act act : own) {
+                if (act.message() instanceof MoveMessage move) {
+                    AgentHandover walker = states.get(move.agent());
+                    PathQuery path = new PathQuery(walker.name(), walker.position(),
+                            Vec3.ground(move.to().x(), move.to().z()), walker.body().radius());
+                    if (Parcel.leavesHalo(grid, home, path, maxRadius)) {
+                        counts.pathsBeyondHalo++;
+                        beyond.add(path);
+                        double margin = path.radius() + maxRadius;
+                        for (ParcelId id : grid.meeting(Math.min(path.from().x(), path.to().x()) - margin,
+                                Math.min(path.from().z(), path.to().z()) - margin,
+                                Math.max(path.from().x(), path.to().x()) + margin,
+                                Math.max(path.from().z(), path.to().z()) + margin)) {
+                            if (!id.equals(home)) {
+                                asks.computeIfAbsent(id, i -> new ArrayList<>()).add(path);
+                            }
+                        }
+                    }
+                }
+            }
+        });
+        Map<PathQuery, FirstContact> first = new HashMap<>(asks.isEmpty() ? Map.of() : parcels.firstAlong(asks));
+        beyond.forEach(path -> first.putIfAbsent(path, null)); // none asked: the path meets no other parcel
+        return first;
     }
 
     /** What comes while no tick passes, or what the parcels do not take yet: a client that comes or goes. */
@@ -362,10 +391,11 @@ public final class SplitGame implements Inbox {
 
     /** Every grasp of the tick to the parcel of its fruit, in order; true when a fruit was taken. */
     private boolean grasp(List<Parcel.KeyedClaim> claims, List<KeyedLine> lines) {
-        claims.sort((a, b) -> a.key().compareTo(b.key()));
+        List<Parcel.KeyedClaim> ordered = new ArrayList<>(claims);
+        ordered.sort((a, b) -> a.key().compareTo(b.key()));
         Map<String, LineKey> firstClaims = new HashMap<>();
-        Map<ParcelId, Parcel> deciding = new LinkedHashMap<>();
-        for (Parcel.KeyedClaim keyed : claims) {
+        Map<ParcelId, List<Parcel.ClaimOf>> deciding = new TreeMap<>();
+        for (Parcel.KeyedClaim keyed : ordered) {
             String fruit = keyed.claim().message().fruit();
             String agent = keyed.claim().agent().name();
             ParcelId at = fruitParcels.getOrDefault(fruit, where.get(agent));
@@ -373,80 +403,84 @@ public final class SplitGame implements Inbox {
                 counts.graspsAcrossBorders++;
             }
             firstClaims.putIfAbsent(fruit, keyed.key().in(Step.GRASP));
-            ClientSession owner = owners.get(agent);
-            Parcel parcel = parcels.get(at);
-            parcel.claim(keyed.claim(), owner, label(owner));
-            deciding.put(at, parcel);
+            SessionRef owner = owners.get(agent);
+            deciding.computeIfAbsent(at, id -> new ArrayList<>())
+                    .add(new Parcel.ClaimOf(keyed.claim(), owner, labels.get(owner.id())));
         }
-        taken.clear();
-        for (Parcel parcel : deciding.values()) {
-            parcel.resolveGrasps(tick, time, firstClaims::get);
-            lines.addAll(parcel.takeLines());
+        if (deciding.isEmpty()) {
+            return false;
         }
-        for (String fruit : taken) {
-            Vec3 place = fruitPlaces.get(fruit);
+        Parcels.Grasped grasped = parcels.grasp(tick, time, deciding, firstClaims);
+        lines.addAll(grasped.lines());
+        Map<ParcelId, List<String>> seen = new TreeMap<>();
+        List<Parcel.Taken> taken = new ArrayList<>(grasped.taken());
+        taken.sort((a, b) -> firstClaims.get(a.fruit()).compareTo(firstClaims.get(b.fruit())));
+        for (Parcel.Taken fruit : taken) {
+            scores.collect(fruit.agent(), fruit.kind());
+            fruitLeft--;
+            listeners.forEach(l -> l.fruitEaten(fruit.agent(), fruit.fruit(), fruit.kind(), fruit.time()));
+            Vec3 place = fruitPlaces.get(fruit.fruit());
             for (ParcelId id : grid.seeing(place.x(), place.z())) {
-                parcels.get(id).fruitTaken(fruit);
+                seen.computeIfAbsent(id, i -> new ArrayList<>()).add(fruit.fruit());
             }
         }
+        parcels.fruitTaken(seen);
         return !taken.isEmpty();
-    }
-
-    private void taken(String agent, String fruit, FruitKind kind, double at) {
-        scores.collect(agent, kind);
-        fruitLeft--;
-        taken.add(fruit);
-        listeners.forEach(l -> l.fruitEaten(agent, fruit, kind, at));
     }
 
     /** Walks every agent to {@code next}: parcel by parcel, and the sets across borders together. */
     private void walk(double next, List<KeyedLine> lines) {
-        List<AgentHandover> together = new ArrayList<>();
-        for (Parcel parcel : parcels.values()) {
-            for (String name : parcel.walk(tick, next)) {
-                together.add(parcel.state(name));
-            }
-            lines.addAll(parcel.takeLines());
-        }
-        if (!together.isEmpty()) {
-            counts.walkedTogether += together.size();
+        Parcels.Walked walked = parcels.walk(tick, next);
+        lines.addAll(walked.lines());
+        if (!walked.left().isEmpty()) {
+            counts.walkedTogether += walked.left().size();
             own.byAgent(tick, Step.WALK);
-            for (AgentHandover walked : PartialSimulation.walkTogether(together, config, tick, next, own)) {
-                parcels.get(where.get(walked.name())).walked(walked);
+            Map<ParcelId, List<AgentHandover>> back = new TreeMap<>();
+            for (AgentHandover agent : PartialSimulation.walkTogether(walked.left(), config, tick, next, own)) {
+                back.computeIfAbsent(where.get(agent.name()), id -> new ArrayList<>()).add(agent);
             }
+            parcels.walked(back);
         }
+    }
+
+    /** Every agent as its parcel has it now. */
+    private void refreshStates() {
+        parcels.owned().values().forEach(own -> own.forEach(agent -> states.put(agent.name(), agent)));
     }
 
     /** Agents that walked out of their parcel's square go to the parcel they walked into. */
     private void handOver() {
-        for (Parcel parcel : parcels.values()) {
-            for (AgentHandover agent : parcel.owned()) {
-                ParcelId into = grid.of(agent.position());
-                if (!into.equals(parcel.id())) {
-                    parcel.release(agent.name());
-                    ClientSession owner = owners.get(agent.name());
-                    parcels.get(into).own(new Driven(agent, owner, label(owner)));
-                    where.put(agent.name(), into);
-                    counts.handOvers++;
-                }
+        Map<ParcelId, List<String>> leaving = new TreeMap<>();
+        Map<ParcelId, List<OwnedAgent>> arriving = new TreeMap<>();
+        for (AgentHandover agent : states.values()) {
+            ParcelId from = where.get(agent.name());
+            ParcelId into = grid.of(agent.position());
+            if (!into.equals(from)) {
+                leaving.computeIfAbsent(from, id -> new ArrayList<>()).add(agent.name());
+                arriving.computeIfAbsent(into, id -> new ArrayList<>()).add(owned(agent));
+                where.put(agent.name(), into);
+                counts.handOvers++;
             }
+        }
+        if (!leaving.isEmpty()) {
+            parcels.release(leaving);
+            parcels.own(arriving);
         }
     }
 
     /** Every parcel's ghosts anew: the agents of other parcels within its halo, as they are now. */
     private void refreshGhosts() {
-        parcels.values().forEach(Parcel::forgetGhosts);
-        for (Parcel parcel : parcels.values()) {
-            for (AgentHandover agent : parcel.owned()) {
-                ClientSession owner = owners.get(agent.name());
-                Driven driven = new Driven(agent, owner, label(owner));
-                for (ParcelId id : grid.seeing(agent.position().x(), agent.position().z())) {
-                    if (!id.equals(parcel.id())) {
-                        parcels.get(id).ghost(driven);
-                    }
+        Map<ParcelId, List<OwnedAgent>> ghosts = new TreeMap<>();
+        for (AgentHandover agent : states.values()) {
+            ParcelId home = where.get(agent.name());
+            OwnedAgent ghost = owned(agent);
+            for (ParcelId id : grid.seeing(agent.position().x(), agent.position().z())) {
+                if (!id.equals(home)) {
+                    ghosts.computeIfAbsent(id, i -> new ArrayList<>()).add(ghost);
                 }
             }
         }
+        parcels.ghosts(ghosts);
     }
 
     private void end(long ended, String reason) {

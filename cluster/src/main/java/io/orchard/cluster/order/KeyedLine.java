@@ -2,7 +2,6 @@ package io.orchard.cluster.order;
 
 import io.orchard.protocol.message.Message;
 import io.orchard.protocol.message.ServerMessage;
-import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.MissedTurn;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Recorder.Audience;
@@ -23,10 +22,10 @@ import io.orchard.server.sim.Recorder.Audience;
  * @param sent    the message as that client gets it; null unless {@code target} is set
  */
 public record KeyedLine(LineKey key, long tick, double time, Audience to, String client, Message message,
-                        MissedTurn missed, ClientSession target, ServerMessage sent) {
+                        MissedTurn missed, SessionRef target, ServerMessage sent) {
 
     /** This line going to {@code session} as {@code message}. */
-    KeyedLine deliveredTo(ClientSession session, ServerMessage message) {
+    KeyedLine deliveredTo(SessionRef session, ServerMessage message) {
         return new KeyedLine(key, tick, time, to, client, this.message, missed, session, message);
     }
 

@@ -9,7 +9,6 @@ import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.Message;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
-import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.MissedTurn;
 import io.orchard.server.sim.Recorder;
 import java.util.ArrayList;
@@ -69,7 +68,7 @@ public final class KeyedLines implements Recorder {
     }
 
     /** The last line said goes to {@code session} as {@code message}: what a part's session proxy reports. */
-    void delivered(ClientSession session, ServerMessage message) {
+    void delivered(SessionRef session, ServerMessage message) {
         int last = lines.size() - 1;
         lines.set(last, lines.get(last).deliveredTo(session, message));
     }

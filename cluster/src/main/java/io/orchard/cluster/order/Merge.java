@@ -53,7 +53,10 @@ public final class Merge {
         for (KeyedLine line : lines) {
             line.writeTo(recorder);
             if (line.target() != null) {
-                line.target().send(line.sent());
+                ClientSession to = all.get(line.target().id());
+                if (to != null) {
+                    to.send(line.sent());
+                }
             } else if (line.to() != null && line.to() != Audience.CLIENT) {
                 Map<Long, ClientSession> to = switch (line.to()) {
                     case VIEWERS -> viewers;

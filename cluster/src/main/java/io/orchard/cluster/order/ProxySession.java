@@ -8,15 +8,16 @@ import io.orchard.server.sim.EncodedLine;
 
 /**
  * A client as a part of the world sees it: what the part sends it is not sent at once but goes with
- * the line the part recorded for it, to be delivered in the single server's order after the merge.
+ * the line the part recorded for it, to be delivered in the single server's order after the merge,
+ * wherever the client is connected. A part never closes a client.
  */
 public final class ProxySession implements ClientSession {
 
-    private final ClientSession client;
+    private final SessionRef client;
     private final KeyedLines lines;
 
     /** The client {@code client}, seen by the part that records to {@code lines}. */
-    public ProxySession(ClientSession client, KeyedLines lines) {
+    public ProxySession(SessionRef client, KeyedLines lines) {
         this.client = client;
         this.lines = lines;
     }
@@ -50,12 +51,10 @@ public final class ProxySession implements ClientSession {
     public void flush() {}
 
     @Override
-    public void close(ErrorMessage last) {
-        client.close(last);
-    }
+    public void close(ErrorMessage last) {}
 
     @Override
     public boolean isOpen() {
-        return client.isOpen();
+        return true;
     }
 }

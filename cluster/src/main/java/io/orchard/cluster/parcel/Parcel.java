@@ -4,11 +4,11 @@ import io.orchard.cluster.order.KeyedLine;
 import io.orchard.cluster.order.KeyedLines;
 import io.orchard.cluster.order.LineKey;
 import io.orchard.cluster.order.ProxySession;
+import io.orchard.cluster.order.SessionRef;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.GraspRequestMessage;
-import io.orchard.protocol.value.Vec3;
+import io.orchard.protocol.value.FruitKind;
 import io.orchard.server.sim.AgentHandover;
-import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.FirstContact;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.PartialSimulation;
@@ -26,7 +26,8 @@ import java.util.function.Function;
  * One parcel of the world: the single server's rules over its agents, its ghosts and its copy of the
  * fruit ({@link PartialSimulation}), every line it says kept with its place in the tick
  * ({@link KeyedLines}) for the merge. What it sends to a client waits in that line, so that the
- * client gets it in the single server's order.
+ * client gets it in the single server's order. It knows its clients by reference only
+ * ({@link SessionRef}), so that it can live on any node.
  */
 public final class Parcel {
 
@@ -38,21 +39,40 @@ public final class Parcel {
      */
     public record KeyedClaim(LineKey key, Claim claim) {}
 
+    /**
+     * A fruit taken in a parcel.
+     *
+     * @param agent the agent that took it
+     * @param fruit the fruit
+     * @param kind  its kind
+     * @param time  the simulated time
+     */
+    public record Taken(String agent, String fruit, FruitKind kind, double time) {}
+
     private final ParcelId id;
+    private final ParcelGrid grid;
+    private final double maxRadius;
     private final KeyedLines lines = new KeyedLines();
     private final PartialSimulation part;
     private final Map<Long, ProxySession> proxies = new HashMap<>();
     /** The places of this tick's grasp requests, in the order applied. */
     private final List<LineKey> requests = new ArrayList<>();
+    private final List<Taken> taken = new ArrayList<>();
+    /** The first contacts on this tick's paths that leave the halo, as the parcels along them answered. */
+    private Map<PathQuery, FirstContact> far = Map.of();
 
-    /**
-     * The parcel {@code id} of a game in {@code world} (a world of its own), telling {@code listener}
-     * of fruit taken, asking {@code elsewhere} about walkers' paths that leave its halo.
-     */
-    public Parcel(ParcelId id, World world, SimulationConfig config, GameListener listener,
-                  PartialSimulation.Elsewhere elsewhere) {
+    /** The parcel {@code id} of {@code grid} in a game in {@code world} (a world of its own). */
+    public Parcel(ParcelId id, ParcelGrid grid, World world, SimulationConfig config) {
         this.id = id;
-        this.part = new PartialSimulation(world, config, lines, listener, elsewhere);
+        this.grid = grid;
+        this.maxRadius = config.bodyLimits().maxRadius();
+        GameListener listener = new GameListener() {
+            @Override
+            public void fruitEaten(String agent, String fruit, FruitKind kind, double time) {
+                taken.add(new Taken(agent, fruit, kind, time));
+            }
+        };
+        this.part = new PartialSimulation(world, config, lines, listener, this::elsewhere);
     }
 
     /** Which parcel this is. */
@@ -60,28 +80,48 @@ public final class Parcel {
         return id;
     }
 
-    private ProxySession proxy(ClientSession session) {
+    /** Whether a walker's path leaves the halo, so that the parcels along it must be asked. */
+    public static boolean leavesHalo(ParcelGrid grid, ParcelId parcel, PathQuery path, double maxRadius) {
+        double margin = path.radius() + maxRadius;
+        return !grid.holds(parcel, Math.min(path.from().x(), path.to().x()) - margin,
+                Math.min(path.from().z(), path.to().z()) - margin, Math.max(path.from().x(), path.to().x()) + margin,
+                Math.max(path.from().z(), path.to().z()) + margin);
+    }
+
+    private FirstContact elsewhere(String walker, io.orchard.protocol.value.Vec3 from,
+                                   io.orchard.protocol.value.Vec3 to, double radius) {
+        PathQuery path = new PathQuery(walker, from, to, radius);
+        if (!leavesHalo(grid, id, path, maxRadius)) {
+            return null;
+        }
+        if (!far.containsKey(path)) {
+            throw new IllegalStateException("no answer from the parcels along " + path);
+        }
+        return far.get(path);
+    }
+
+    private ProxySession proxy(SessionRef session) {
         return proxies.computeIfAbsent(session.id(), i -> new ProxySession(session, lines));
     }
 
-    /** Takes an agent as its own. */
-    public void own(Driven driven) {
-        part.own(new Driven(driven.agent(), proxy(driven.owner()), driven.label()));
+    private Driven driven(OwnedAgent agent) {
+        return new Driven(agent.agent(), proxy(agent.owner()), agent.label());
     }
 
-    /** Holds a copy of another parcel's agent. */
-    public void ghost(Driven driven) {
-        part.ghost(new Driven(driven.agent(), proxy(driven.owner()), driven.label()));
+    /** Takes agents as its own. */
+    public void own(List<OwnedAgent> agents) {
+        agents.forEach(agent -> part.own(driven(agent)));
     }
 
-    /** Forgets every ghost. */
-    public void forgetGhosts() {
+    /** Holds these copies of other parcels' agents, and no other. */
+    public void ghosts(List<OwnedAgent> ghosts) {
         part.forgetGhosts();
+        ghosts.forEach(ghost -> part.ghost(driven(ghost)));
     }
 
-    /** Gives up an own agent; null when it has none of that name. */
-    public AgentHandover release(String name) {
-        return part.release(name);
+    /** Gives up own agents. */
+    public void release(List<String> names) {
+        names.forEach(part::release);
     }
 
     /** The own agents as they are now. */
@@ -89,26 +129,39 @@ public final class Parcel {
         return part.owned();
     }
 
-    /** The own agent of that name, or null. */
-    public AgentHandover state(String name) {
-        return part.state(name);
-    }
-
-    /** The perceptions due at {@code tick}, at simulated {@code time}. */
-    public void perceive(long tick, double time) {
+    /** The perceptions due at {@code tick}, at simulated {@code time}; returns their lines. */
+    public List<KeyedLine> perceive(long tick, double time) {
         part.at(tick, time);
         lines.byAgent(tick, LineKey.Step.PERCEIVE);
         part.perceive(tick);
+        return lines.take();
     }
 
-    /** Applies a client's message about an own agent, at its place {@code key} of the tick. */
-    public void act(LineKey key, long tick, double time, ClientSession session, ClientMessage message) {
-        part.at(tick, time);
-        lines.cause(key);
-        part.act(proxy(session), message);
-        if (message instanceof GraspRequestMessage) {
-            requests.add(key);
+    /** The first own agent each walker meets on its path, or null for a path that meets none. */
+    public List<FirstContact> firstAlong(List<PathQuery> paths) {
+        List<FirstContact> first = new ArrayList<>();
+        for (PathQuery path : paths) {
+            first.add(part.firstAlong(path.walker(), path.from(), path.to(), path.radius()));
         }
+        return first;
+    }
+
+    /**
+     * Applies clients' messages about own agents, each at its place of the tick, in that order;
+     * {@code answers} are the first contacts on the paths that leave the halo.
+     */
+    public List<KeyedLine> apply(long tick, double time, List<Act> acts, Map<PathQuery, FirstContact> answers) {
+        part.at(tick, time);
+        far = answers;
+        for (Act act : acts) {
+            lines.cause(act.key());
+            part.act(proxy(act.session()), act.message());
+            if (act.message() instanceof GraspRequestMessage) {
+                requests.add(act.key());
+            }
+        }
+        far = Map.of();
+        return lines.take();
     }
 
     /** The grasps its agents asked for in this tick, each with the place of its request. */
@@ -125,42 +178,56 @@ public final class Parcel {
         return keyed;
     }
 
-    /** A grasp of this parcel's fruit, by an agent driven by {@code owner}; give them in their order. */
-    public void claim(Claim claim, ClientSession owner, String label) {
-        part.claim(claim, proxy(owner), label);
-    }
-
-    /** Decides the grasps claimed, their lines in the places {@code firstClaims} gives each fruit. */
-    public boolean resolveGrasps(long tick, double time, Function<String, LineKey> firstClaims) {
+    /**
+     * Decides the grasps of this parcel's fruit, given in the order of their requests, their lines in
+     * the places {@code firstClaims} gives each fruit; returns the lines, and adds the fruit taken.
+     */
+    public List<KeyedLine> grasp(long tick, double time, List<ClaimOf> claims, Function<String, LineKey> firstClaims,
+                                 List<Taken> took) {
+        claims.forEach(c -> part.claim(c.claim(), proxy(c.owner()), c.label()));
         part.at(tick, time);
         lines.byFruit(firstClaims);
-        return part.resolveGrasps();
-    }
-
-    /** Walks its agents to {@code time}; returns those left to be walked with other parcels' agents. */
-    public List<String> walk(long tick, double time) {
-        part.at(tick, time);
-        lines.byAgent(tick, LineKey.Step.WALK);
-        return part.walk(time);
-    }
-
-    /** Puts an own agent where it was walked with other parcels' agents. */
-    public void walked(AgentHandover agent) {
-        part.walked(agent);
-    }
-
-    /** A fruit in its halo was taken. */
-    public void fruitTaken(String fruit) {
-        part.fruitTaken(fruit);
-    }
-
-    /** The first own agent a walker meets on a segment, or null. */
-    public FirstContact firstAlong(String walker, Vec3 from, Vec3 to, double radius) {
-        return part.firstAlong(walker, from, to, radius);
-    }
-
-    /** Takes the lines said since the last time. */
-    public List<KeyedLine> takeLines() {
+        taken.clear();
+        part.resolveGrasps();
+        took.addAll(taken);
         return lines.take();
     }
+
+    /** Fruit in its halo was taken. */
+    public void fruitTaken(List<String> fruit) {
+        fruit.forEach(part::fruitTaken);
+    }
+
+    /** Walks its agents to {@code time}; returns the lines, and adds those left to be walked with others. */
+    public List<KeyedLine> walk(long tick, double time, List<AgentHandover> left) {
+        part.at(tick, time);
+        lines.byAgent(tick, LineKey.Step.WALK);
+        for (String name : part.walk(time)) {
+            left.add(part.state(name));
+        }
+        return lines.take();
+    }
+
+    /** Puts own agents where they were walked with other parcels' agents. */
+    public void walked(List<AgentHandover> agents) {
+        agents.forEach(part::walked);
+    }
+
+    /**
+     * A client's message about an own agent, at its place of the tick. A value, sent between nodes.
+     *
+     * @param key     its place
+     * @param session the client that sent it
+     * @param message the message
+     */
+    public record Act(LineKey key, SessionRef session, ClientMessage message) {}
+
+    /**
+     * A grasp of a parcel's fruit, with the client of the grasping agent. A value, sent between nodes.
+     *
+     * @param claim the grasp
+     * @param owner the client of the grasping agent
+     * @param label that client's label
+     */
+    public record ClaimOf(Claim claim, SessionRef owner, String label) {}
 }

@@ -1,0 +1,78 @@
+package io.orchard.cluster.game;
+
+import io.orchard.cluster.order.KeyedLine;
+import io.orchard.cluster.order.LineKey;
+import io.orchard.cluster.parcel.OwnedAgent;
+import io.orchard.cluster.parcel.Parcel;
+import io.orchard.cluster.parcel.ParcelId;
+import io.orchard.cluster.parcel.PathQuery;
+import io.orchard.server.sim.AgentHandover;
+import io.orchard.server.sim.FirstContact;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Every parcel of a split game, as its tick reaches them: one call per step of the tick, which
+ * returns once every parcel concerned has done its part. The parcels may be objects of this JVM
+ * ({@link LocalParcels}) or sharded entities of a cluster.
+ */
+public interface Parcels {
+
+    /**
+     * What the parcels said while applying the tick's messages, and the grasps they were asked for.
+     *
+     * @param lines  their lines
+     * @param claims the grasps, each with the place of its request
+     */
+    record Applied(List<KeyedLine> lines, List<Parcel.KeyedClaim> claims) {}
+
+    /**
+     * What the parcels said while deciding the grasps, and the fruit taken.
+     *
+     * @param lines their lines
+     * @param taken the fruit taken, parcel by parcel
+     */
+    record Grasped(List<KeyedLine> lines, List<Parcel.Taken> taken) {}
+
+    /**
+     * What the parcels said while walking their agents, and the agents they left to be walked with
+     * other parcels' agents.
+     *
+     * @param lines their lines
+     * @param left  the agents left
+     */
+    record Walked(List<KeyedLine> lines, List<AgentHandover> left) {}
+
+    /** Each named parcel takes these agents as its own. */
+    void own(Map<ParcelId, List<OwnedAgent>> agents);
+
+    /** Every parcel's ghosts anew: those named get these, the others none. */
+    void ghosts(Map<ParcelId, List<OwnedAgent>> ghosts);
+
+    /** Each named parcel gives up these agents. */
+    void release(Map<ParcelId, List<String>> names);
+
+    /** Every parcel's own agents as they are now, by parcel. */
+    Map<ParcelId, List<AgentHandover>> owned();
+
+    /** The perceptions due at {@code tick}: every parcel's lines. */
+    List<KeyedLine> perceive(long tick, double time);
+
+    /** The first contact on each path, from the parcels named for it; null for a path that meets none. */
+    Map<PathQuery, FirstContact> firstAlong(Map<ParcelId, List<PathQuery>> paths);
+
+    /** Each named parcel applies its messages of the tick, in order, with the answers for paths beyond halos. */
+    Applied apply(long tick, double time, Map<ParcelId, List<Parcel.Act>> acts, Map<PathQuery, FirstContact> answers);
+
+    /** Each named parcel decides the grasps of its fruit, given in order, lines placed by {@code firstClaims}. */
+    Grasped grasp(long tick, double time, Map<ParcelId, List<Parcel.ClaimOf>> claims, Map<String, LineKey> firstClaims);
+
+    /** Each named parcel forgets fruit taken in its halo. */
+    void fruitTaken(Map<ParcelId, List<String>> fruit);
+
+    /** Every parcel walks its agents to simulated {@code time}. */
+    Walked walk(long tick, double time);
+
+    /** Each named parcel puts its agents where they were walked together with others. */
+    void walked(Map<ParcelId, List<AgentHandover>> agents);
+}

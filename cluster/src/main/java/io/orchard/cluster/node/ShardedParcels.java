@@ -1,0 +1,184 @@
+package io.orchard.cluster.node;
+
+import io.orchard.cluster.game.FirstContacts;
+import io.orchard.cluster.game.Parcels;
+import io.orchard.cluster.order.KeyedLine;
+import io.orchard.cluster.order.LineKey;
+import io.orchard.cluster.parcel.OwnedAgent;
+import io.orchard.cluster.parcel.Parcel;
+import io.orchard.cluster.parcel.ParcelGrid;
+import io.orchard.cluster.parcel.ParcelId;
+import io.orchard.cluster.parcel.PathQuery;
+import io.orchard.server.sim.AgentHandover;
+import io.orchard.server.sim.FirstContact;
+import io.orchard.server.sim.SimulationConfig;
+import io.orchard.server.world.World;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.function.BiFunction;
+import java.util.function.Function;
+import org.apache.pekko.actor.typed.ActorRefResolver;
+import org.apache.pekko.actor.typed.ActorSystem;
+import org.apache.pekko.cluster.sharding.typed.javadsl.ClusterSharding;
+import org.apache.pekko.cluster.sharding.typed.javadsl.Entity;
+
+/**
+ * The parcels of a split game as Pekko sharded entities ({@link ParcelEntity}), wherever the cluster
+ * places them: each step of the tick asks every parcel concerned at once and waits for all their
+ * answers. Only parcels with agents of their own are asked to perceive and walk; ghosts go to the
+ * parcels that hold some or held some before.
+ */
+public final class ShardedParcels implements Parcels {
+
+    /** How long a step waits for a parcel's answer before the tick fails. */
+    static final Duration STEP_TIMEOUT = Duration.ofSeconds(30);
+
+    private final ClusterSharding sharding;
+    private final ActorRefResolver resolver;
+    private final Map<ParcelId, Integer> agents = new TreeMap<>();
+    private Set<ParcelId> ghosted = new HashSet<>();
+
+    private ShardedParcels(ActorSystem<?> system) {
+        this.sharding = ClusterSharding.get(system);
+        this.resolver = ActorRefResolver.get(system);
+    }
+
+    /**
+     * Starts the parcels' sharding on this node of {@code system}'s cluster, each parcel made from this
+     * node's {@code world} (the same on every node), and returns what reaches them. Every node of the
+     * cluster calls it, for the same grid, world and settings.
+     */
+    public static ShardedParcels start(ActorSystem<?> system, ParcelGrid grid, World world, SimulationConfig config) {
+        ClusterSharding.get(system).init(Entity.of(ParcelEntity.TYPE,
+                context -> ParcelEntity.create(context.getEntityId(), grid, world, config)));
+        return new ShardedParcels(system);
+    }
+
+    /** Asks each parcel its command at once and waits for every answer, by parcel. */
+    @SuppressWarnings("unchecked")
+    private <R extends ParcelReply> Map<ParcelId, R> ask(Collection<ParcelId> parcels,
+                                                         Function<ParcelId, Function<String, ParcelCommand>> command) {
+        Map<ParcelId, CompletableFuture<ParcelReply>> asked = new LinkedHashMap<>();
+        for (ParcelId id : parcels) {
+            Function<String, ParcelCommand> make = command.apply(id);
+            asked.put(id, sharding.entityRefFor(ParcelEntity.TYPE, id.toString())
+                    .<ParcelReply>ask(replyTo -> make.apply(resolver.toSerializationFormat(replyTo)), STEP_TIMEOUT)
+                    .toCompletableFuture());
+        }
+        Map<ParcelId, R> answers = new TreeMap<>();
+        try {
+            asked.forEach((id, answer) -> answers.put(id, (R) answer.join()));
+        } catch (CompletionException e) {
+            throw new IllegalStateException("a parcel did not answer: " + e.getCause(), e.getCause());
+        }
+        return answers;
+    }
+
+    private <T> void tellEach(Map<ParcelId, T> what, BiFunction<T, String, ParcelCommand> command) {
+        ask(what.keySet(), id -> replyTo -> command.apply(what.get(id), replyTo));
+    }
+
+    private static List<KeyedLine> lines(Collection<? extends List<Wire.Line>> said) {
+        List<KeyedLine> lines = new ArrayList<>();
+        said.forEach(part -> part.forEach(line -> lines.add(line.line())));
+        return lines;
+    }
+
+    @Override
+    public void own(Map<ParcelId, List<OwnedAgent>> owned) {
+        owned.forEach((id, list) -> agents.merge(id, list.size(), Integer::sum));
+        tellEach(owned, ParcelCommand.Own::new);
+    }
+
+    @Override
+    public void ghosts(Map<ParcelId, List<OwnedAgent>> ghosts) {
+        Map<ParcelId, List<OwnedAgent>> all = new TreeMap<>(ghosts);
+        ghosted.forEach(id -> all.putIfAbsent(id, List.of()));
+        ghosted = new HashSet<>(ghosts.keySet());
+        tellEach(all, ParcelCommand.Ghosts::new);
+    }
+
+    @Override
+    public void release(Map<ParcelId, List<String>> names) {
+        names.forEach((id, list) -> agents.merge(id, -list.size(), Integer::sum));
+        agents.values().removeIf(count -> count <= 0);
+        tellEach(names, ParcelCommand.Release::new);
+    }
+
+    @Override
+    public Map<ParcelId, List<AgentHandover>> owned() {
+        Map<ParcelId, ParcelReply.Owned> answers = ask(agents.keySet(), id -> ParcelCommand.ListOwned::new);
+        Map<ParcelId, List<AgentHandover>> owned = new TreeMap<>();
+        answers.forEach((id, answer) -> owned.put(id, answer.agents()));
+        return owned;
+    }
+
+    @Override
+    public List<KeyedLine> perceive(long tick, double time) {
+        Map<ParcelId, ParcelReply.Said> said = ask(agents.keySet(),
+                id -> replyTo -> new ParcelCommand.Perceive(tick, time, replyTo));
+        return lines(said.values().stream().map(ParcelReply.Said::lines).toList());
+    }
+
+    @Override
+    public Map<PathQuery, FirstContact> firstAlong(Map<ParcelId, List<PathQuery>> paths) {
+        Map<ParcelId, ParcelReply.Contacts> answers = ask(paths.keySet(),
+                id -> replyTo -> new ParcelCommand.FirstAlong(paths.get(id), replyTo));
+        Map<PathQuery, FirstContact> first = new HashMap<>();
+        answers.forEach((id, answer) -> FirstContacts.add(first, paths.get(id), answer.contacts()));
+        return first;
+    }
+
+    @Override
+    public Applied apply(long tick, double time, Map<ParcelId, List<Parcel.Act>> acts,
+                         Map<PathQuery, FirstContact> answers) {
+        List<ParcelCommand.PathAnswer> far = new ArrayList<>();
+        answers.forEach((path, contact) -> far.add(new ParcelCommand.PathAnswer(path, contact)));
+        Map<ParcelId, ParcelReply.Applied> applied = ask(acts.keySet(), id -> replyTo -> new ParcelCommand.Apply(tick,
+                time, acts.get(id).stream().map(Wire.Act::of).toList(), far, replyTo));
+        List<Parcel.KeyedClaim> claims = new ArrayList<>();
+        applied.values().forEach(a -> a.claims().forEach(claim -> claims.add(claim.keyed())));
+        return new Applied(lines(applied.values().stream().map(ParcelReply.Applied::lines).toList()), claims);
+    }
+
+    @Override
+    public Grasped grasp(long tick, double time, Map<ParcelId, List<Parcel.ClaimOf>> claims,
+                         Map<String, LineKey> firstClaims) {
+        List<ParcelCommand.FirstClaim> first = new ArrayList<>();
+        firstClaims.forEach((fruit, key) -> first.add(new ParcelCommand.FirstClaim(fruit, key)));
+        Map<ParcelId, ParcelReply.Grasped> grasped = ask(claims.keySet(), id -> replyTo -> new ParcelCommand.Grasp(
+                tick, time, claims.get(id).stream().map(Wire.Grasp::of).toList(), first, replyTo));
+        List<Parcel.Taken> taken = new ArrayList<>();
+        grasped.values().forEach(g -> taken.addAll(g.taken()));
+        return new Grasped(lines(grasped.values().stream().map(ParcelReply.Grasped::lines).toList()), taken);
+    }
+
+    @Override
+    public void fruitTaken(Map<ParcelId, List<String>> fruit) {
+        tellEach(fruit, ParcelCommand.FruitTaken::new);
+    }
+
+    @Override
+    public Walked walk(long tick, double time) {
+        Map<ParcelId, ParcelReply.Walked> walked = ask(agents.keySet(),
+                id -> replyTo -> new ParcelCommand.Walk(tick, time, replyTo));
+        List<AgentHandover> left = new ArrayList<>();
+        walked.values().forEach(w -> left.addAll(w.left()));
+        return new Walked(lines(walked.values().stream().map(ParcelReply.Walked::lines).toList()), left);
+    }
+
+    @Override
+    public void walked(Map<ParcelId, List<AgentHandover>> walkedTogether) {
+        tellEach(walkedTogether, ParcelCommand.PutWalked::new);
+    }
+}
