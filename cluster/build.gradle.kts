@@ -19,6 +19,8 @@ dependencies {
     implementation(libs.jackson.databind)
     implementation(libs.slf4j.api)
 
+    // The paper's agents, playing on one server and on a cluster in the tests.
+    testImplementation(project(":agents"))
     testImplementation(libs.logback.classic)
     testImplementation(libs.junit.jupiter)
     testImplementation(libs.assertj.core)

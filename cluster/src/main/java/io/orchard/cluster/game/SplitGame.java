@@ -47,12 +47,16 @@ import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.world.Fruit;
 import io.orchard.server.world.World;
 import java.util.ArrayList;
+import java.time.Duration;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 
 /**
@@ -67,8 +71,10 @@ import java.util.function.Function;
  * their places lie in. From then on every tick runs in the steps of docs/scaling.md, and what the
  * parcels say is merged by key ({@link Merge}).
  *
- * <p>Not yet: agents that join, leave or come back once the game runs, viewers that connect to a
- * game under way, pausing, and lockstep turns (the caller ends each tick).
+ * <p>In lockstep, its owner waits for the agents' turns ({@link #awaitTurns}) between the two halves
+ * of a tick; a turn missed is not yet recorded as the single server records it. Not yet: agents
+ * that join, leave or come back once the game runs, viewers that connect to a game under way, and
+ * pausing.
  */
 public final class SplitGame implements Inbox {
 
@@ -83,6 +89,8 @@ public final class SplitGame implements Inbox {
     private final ParcelGrid grid;
     private final Function<ParcelGrid, Parcels> parcelsOf;
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
+    /** Events taken from the inbox while waiting for turns, applied at the end of the tick. */
+    private final List<Event> pending = new ArrayList<>();
     private Parcels parcels;
     /** Every agent's controller, by the agent's name: the order in which clients' messages apply. */
     private final Map<String, SessionRef> owners = new TreeMap<>();
@@ -216,6 +224,38 @@ public final class SplitGame implements Inbox {
         return new OwnedAgent(agent, owner, labels.get(owner.id()));
     }
 
+    /**
+     * In lockstep: waits until the client of every agent has ended its turn of the running tick, or
+     * {@code deadline} of wall-clock time has passed; what they send meanwhile counts in this tick.
+     *
+     * @return whether every turn was ended in time
+     */
+    public boolean awaitTurns(Duration deadline) throws InterruptedException {
+        Set<Long> waiting = new HashSet<>();
+        owners.values().forEach(owner -> waiting.add(owner.id()));
+        pending.forEach(event -> ended(event, waiting));
+        long end = System.nanoTime() + deadline.toNanos();
+        while (!waiting.isEmpty()) {
+            long left = end - System.nanoTime();
+            if (left <= 0) {
+                return false;
+            }
+            Event event = inbox.poll(left, TimeUnit.NANOSECONDS);
+            if (event != null) {
+                pending.add(event);
+                ended(event, waiting);
+            }
+        }
+        return true;
+    }
+
+    /** Takes the event's client off {@code waiting} when it ended its turn of this tick or left. */
+    private void ended(Event event, Set<Long> waiting) {
+        if (event.gone() || event.message() instanceof EndTurnMessage end && end.tick() >= tick) {
+            waiting.remove(event.session().id());
+        }
+    }
+
     /** The first half of a tick: the clock and the perceptions asked for. */
     public void beginTick() {
         if (phase != Phase.RUNNING) {
@@ -237,7 +277,8 @@ public final class SplitGame implements Inbox {
             applyNow();
             return;
         }
-        List<Event> events = new ArrayList<>();
+        List<Event> events = new ArrayList<>(pending);
+        pending.clear();
         inbox.drainTo(events);
         Map<ParcelId, List<Parcel.Act>> acts = new TreeMap<>();
         for (Map.Entry<LineKey, Event> applied : inClientOrder(events).entrySet()) {
@@ -358,11 +399,7 @@ public final class SplitGame implements Inbox {
                     if (Parcel.leavesHalo(grid, home, path, maxRadius)) {
                         counts.pathsBeyondHalo++;
                         beyond.add(path);
-                        double margin = path.radius() + maxRadius;
-                        for (ParcelId id : grid.meeting(Math.min(path.from().x(), path.to().x()) - margin,
-                                Math.min(path.from().z(), path.to().z()) - margin,
-                                Math.max(path.from().x(), path.to().x()) + margin,
-                                Math.max(path.from().z(), path.to().z()) + margin)) {
+                        for (ParcelId id : grid.along(path, maxRadius)) {
                             if (!id.equals(home)) {
                                 asks.computeIfAbsent(id, i -> new ArrayList<>()).add(path);
                             }
@@ -508,6 +545,11 @@ public final class SplitGame implements Inbox {
     }
 
     // ---- state ---------------------------------------------------------------------------------
+
+    /** The settings the game runs with. */
+    public SimulationConfig config() {
+        return config;
+    }
 
     /** The current phase. */
     public Phase phase() {

@@ -82,10 +82,7 @@ public final class Parcel {
 
     /** Whether a walker's path leaves the halo, so that the parcels along it must be asked. */
     public static boolean leavesHalo(ParcelGrid grid, ParcelId parcel, PathQuery path, double maxRadius) {
-        double margin = path.radius() + maxRadius;
-        return !grid.holds(parcel, Math.min(path.from().x(), path.to().x()) - margin,
-                Math.min(path.from().z(), path.to().z()) - margin, Math.max(path.from().x(), path.to().x()) + margin,
-                Math.max(path.from().z(), path.to().z()) + margin);
+        return !grid.holds(parcel, path, maxRadius);
     }
 
     private FirstContact elsewhere(String walker, io.orchard.protocol.value.Vec3 from,

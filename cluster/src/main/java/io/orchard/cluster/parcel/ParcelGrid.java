@@ -98,6 +98,28 @@ public final class ParcelGrid {
         return met;
     }
 
+    /**
+     * Whether a walker's path, with every agent it could touch on the way (within its radius and
+     * {@code maxRadius} of the path), lies in the parcel's halo.
+     */
+    public boolean holds(ParcelId parcel, PathQuery path, double maxRadius) {
+        double[] box = box(path, maxRadius);
+        return holds(parcel, box[0], box[1], box[2], box[3]);
+    }
+
+    /** The parcels that own the agents a walker could touch on its path (within its radius and {@code maxRadius}). */
+    public List<ParcelId> along(PathQuery path, double maxRadius) {
+        double[] box = box(path, maxRadius);
+        return meeting(box[0], box[1], box[2], box[3]);
+    }
+
+    private static double[] box(PathQuery path, double maxRadius) {
+        double margin = path.radius() + maxRadius;
+        return new double[] {Math.min(path.from().x(), path.to().x()) - margin,
+                Math.min(path.from().z(), path.to().z()) - margin, Math.max(path.from().x(), path.to().x()) + margin,
+                Math.max(path.from().z(), path.to().z()) + margin};
+    }
+
     /** The parcels whose halos hold a point: those that keep a ghost of an agent standing there. */
     public List<ParcelId> seeing(double x, double z) {
         return meeting(x - halo, z - halo, x + halo, z + halo);

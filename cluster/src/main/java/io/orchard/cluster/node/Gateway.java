@@ -1,0 +1,106 @@
+package io.orchard.cluster.node;
+
+import io.orchard.protocol.MessageCodec;
+import io.orchard.protocol.message.ClientMessage;
+import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.GamePhase;
+import io.orchard.protocol.value.Role;
+import io.orchard.server.Version;
+import io.orchard.server.sim.ClientSession;
+import io.orchard.server.sim.Inbox;
+import io.orchard.server.sim.SimulationConfig;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import org.apache.pekko.actor.typed.ActorRef;
+import org.apache.pekko.actor.typed.Behavior;
+import org.apache.pekko.actor.typed.javadsl.Behaviors;
+
+/**
+ * A node's door for agents and viewers: the server's own network front end
+ * ({@code io.orchard.server.net.NetServer}) hands it what its clients do, and it passes that to the
+ * tick, wherever in the cluster the tick runs; the tick's lines for its clients come back to its
+ * actor ({@link #behavior}) and go out on their connections. A client cannot tell it from a server.
+ * Clients are numbered across the cluster: the node's number in the upper half of a session's
+ * number, the connection's in the lower.
+ */
+public final class Gateway implements Inbox {
+
+    private static final MessageCodec CODEC = new MessageCodec();
+
+    private final long node;
+    private final ActorRef<TickCommand> tick;
+    private final Bounds bounds;
+    private final SimulationConfig config;
+    private final Map<Long, ClientSession> sessions = new ConcurrentHashMap<>();
+    private volatile String self;
+    private volatile long clockTick;
+    private volatile GamePhase phase = GamePhase.WAITING;
+
+    /** The gateway of node number {@code node}, telling {@code tick} what its clients do. */
+    public Gateway(int node, ActorRef<TickCommand> tick, Bounds bounds, SimulationConfig config) {
+        this.node = (long) node << 32;
+        this.tick = tick;
+        this.bounds = bounds;
+        this.config = config;
+    }
+
+    /** Its actor, as the tick addresses it: set once the actor is made. */
+    public void attach(String actor) {
+        this.self = actor;
+    }
+
+    /** The actor that writes the tick's lines to this gateway's clients: all writes happen on it. */
+    public static Behavior<GatewayCommand> behavior(Gateway gateway) {
+        return Behaviors.receive(GatewayCommand.class)
+                .onMessage(GatewayCommand.Deliver.class, deliver -> {
+                    ClientSession session = gateway.sessions.get(deliver.session());
+                    if (session != null) {
+                        deliver.lines().forEach(line -> session.send(CODEC.decodeServer(line)));
+                        session.flush();
+                    }
+                    return Behaviors.same();
+                })
+                .onMessage(GatewayCommand.Close.class, close -> {
+                    ClientSession session = gateway.sessions.get(close.session());
+                    if (session != null) {
+                        session.close((ErrorMessage) CODEC.decodeServer(close.line()));
+                    }
+                    return Behaviors.same();
+                })
+                .onMessage(GatewayCommand.Clock.class, clock -> {
+                    gateway.clockTick = clock.tick();
+                    gateway.phase = GamePhase.valueOf(clock.phase());
+                    return Behaviors.same();
+                })
+                .build();
+    }
+
+    private long number(ClientSession session) {
+        return node | session.id();
+    }
+
+    @Override
+    public void connected(ClientSession session) {
+        sessions.put(number(session), session);
+        tick.tell(new TickCommand.Connected(number(session), session.role(), session.protocolVersion(), self));
+    }
+
+    @Override
+    public void received(ClientSession session, ClientMessage message) {
+        tick.tell(new TickCommand.Received(number(session), CODEC.encode(message)));
+    }
+
+    @Override
+    public void disconnected(ClientSession session, String reason) {
+        sessions.remove(number(session));
+        tick.tell(new TickCommand.Disconnected(number(session)));
+    }
+
+    @Override
+    public WelcomeMessage welcome(long seq, Role role, int protocolVersion) {
+        return new WelcomeMessage(seq, protocolVersion, Version.current(), role, bounds, config.tickRate(),
+                config.clock(), clockTick, config.timeLimit(), phase).forVersion(protocolVersion);
+    }
+}
