@@ -14,6 +14,9 @@ dependencies {
     // The cluster runs the server's rules for each parcel of the world, and its front end on each node.
     api(project(":server"))
     implementation(project(":protocol"))
+    implementation(project(":cli"))
+    // NodeMain.command() hands its picocli CommandLine to launchers.
+    api(libs.picocli)
     implementation(libs.pekko.cluster.sharding.typed)
     // The cluster's messages between nodes, as JSON: the Jackson the protocol brings.
     implementation(libs.jackson.databind)

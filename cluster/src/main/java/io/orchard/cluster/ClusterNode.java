@@ -4,10 +4,12 @@ import io.orchard.cluster.game.SplitGame;
 import io.orchard.cluster.node.Gateway;
 import io.orchard.cluster.node.GatewayCommand;
 import io.orchard.cluster.node.NodeSettings;
+import io.orchard.cluster.node.ParcelEntity;
 import io.orchard.cluster.node.ShardedParcels;
 import io.orchard.cluster.node.TickCommand;
 import io.orchard.cluster.node.TickSingleton;
 import io.orchard.cluster.parcel.ParcelGrid;
+import io.orchard.cluster.parcel.ParcelId;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.server.Version;
 import io.orchard.server.net.NetLimits;
@@ -23,6 +25,7 @@ import java.io.UncheckedIOException;
 import java.net.InetSocketAddress;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
@@ -30,7 +33,12 @@ import org.apache.pekko.actor.typed.ActorRef;
 import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.ActorSystem;
 import org.apache.pekko.actor.typed.Props;
+import org.apache.pekko.actor.typed.javadsl.AskPattern;
 import org.apache.pekko.actor.typed.javadsl.Behaviors;
+import org.apache.pekko.cluster.sharding.ShardRegion.CurrentShardRegionState;
+import org.apache.pekko.cluster.sharding.typed.ClusterShardingQuery;
+import org.apache.pekko.cluster.sharding.typed.GetShardRegionState;
+import org.apache.pekko.cluster.sharding.typed.javadsl.ClusterSharding;
 import org.apache.pekko.cluster.typed.Cluster;
 import org.apache.pekko.cluster.typed.ClusterSingleton;
 import org.apache.pekko.cluster.typed.Join;
@@ -54,10 +62,12 @@ public final class ClusterNode implements AutoCloseable {
 
     private final ActorSystem<Void> system;
     private final NetServer net;
+    private final Gateway gateway;
 
-    private ClusterNode(ActorSystem<Void> system, NetServer net) {
+    private ClusterNode(ActorSystem<Void> system, NetServer net, Gateway gateway) {
         this.system = system;
         this.net = net;
+        this.gateway = gateway;
     }
 
     /** A builder with the defaults: port 7557 and cluster port 2551 on loopback, realtime, parcels of 60. */
@@ -84,6 +94,37 @@ public final class ClusterNode implements AutoCloseable {
             }
         }
         return up;
+    }
+
+    /** The parcels this node hosts now, row by row. */
+    public List<ParcelId> parcelsHere() {
+        try {
+            CurrentShardRegionState state = AskPattern.<ClusterShardingQuery, CurrentShardRegionState>ask(
+                    ClusterSharding.get(system).shardState(),
+                    replyTo -> new GetShardRegionState(ParcelEntity.TYPE, replyTo), Duration.ofSeconds(5),
+                    system.scheduler()).toCompletableFuture().get(10, TimeUnit.SECONDS);
+            List<ParcelId> here = new ArrayList<>();
+            state.getShards().forEach(shard -> shard.getEntityIds().forEach(id -> here.add(ParcelId.parse(id))));
+            here.sort(null);
+            return here;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return List.of();
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            return List.of();
+        }
+    }
+
+    /**
+     * A line on the node's health: its cluster address, the members up, the game's tick and phase as
+     * the tick last told this node, its clients and the parcels it hosts.
+     */
+    public String status() {
+        List<ParcelId> parcels = parcelsHere();
+        return String.format(java.util.Locale.ROOT, "node %s  members up %d  %s  tick %d  clients %d  parcels %d %s",
+                Cluster.get(system).selfMember().address().hostPort(), membersUp(),
+                gateway.phase().wireName(), gateway.tick(), gateway.clients(), parcels.size(),
+                parcels.stream().map(ParcelId::toString).toList());
     }
 
     /** The node's actor system, for programs that look into the cluster. */
@@ -246,7 +287,7 @@ public final class ClusterNode implements AutoCloseable {
                 gateway.attach(ActorRefResolver.get(system).toSerializationFormat(actor));
                 NetServer net = NetServer.start(new InetSocketAddress(bind, port), gateway, null, null,
                         NetLimits.DEFAULT);
-                return new ClusterNode(system, net);
+                return new ClusterNode(system, net, gateway);
             } catch (IOException | RuntimeException e) {
                 system.terminate();
                 throw e;

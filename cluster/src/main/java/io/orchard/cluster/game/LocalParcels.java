@@ -35,26 +35,17 @@ public final class LocalParcels implements Parcels {
     }
 
     @Override
-    public void ghosts(Map<ParcelId, List<OwnedAgent>> ghosts) {
-        parcels.forEach((id, parcel) -> parcel.ghosts(ghosts.getOrDefault(id, List.of())));
-    }
-
-    @Override
     public void release(Map<ParcelId, List<String>> names) {
         names.forEach((id, released) -> parcels.get(id).release(released));
     }
 
     @Override
-    public Map<ParcelId, List<AgentHandover>> owned() {
-        Map<ParcelId, List<AgentHandover>> owned = new TreeMap<>();
-        parcels.forEach((id, parcel) -> owned.put(id, parcel.owned()));
-        return owned;
-    }
-
-    @Override
-    public List<KeyedLine> perceive(long tick, double time) {
+    public List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
         List<KeyedLine> lines = new ArrayList<>();
-        parcels.values().forEach(parcel -> lines.addAll(parcel.perceive(tick, time)));
+        parcels.forEach((id, parcel) -> {
+            parcel.ghosts(ghosts.getOrDefault(id, List.of()));
+            lines.addAll(parcel.perceive(tick, time));
+        });
         return lines;
     }
 
@@ -70,12 +61,14 @@ public final class LocalParcels implements Parcels {
                          Map<PathQuery, FirstContact> answers) {
         List<KeyedLine> lines = new ArrayList<>();
         List<Parcel.KeyedClaim> claims = new ArrayList<>();
+        List<AgentHandover> owned = new ArrayList<>();
         acts.forEach((id, own) -> {
             Parcel parcel = parcels.get(id);
             lines.addAll(parcel.apply(tick, time, own, answers));
             claims.addAll(parcel.takeClaims());
+            owned.addAll(parcel.owned());
         });
-        return new Applied(lines, claims);
+        return new Applied(lines, claims, owned);
     }
 
     @Override
@@ -93,11 +86,16 @@ public final class LocalParcels implements Parcels {
     }
 
     @Override
-    public Walked walk(long tick, double time) {
+    public Walked walk(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
         List<KeyedLine> lines = new ArrayList<>();
         List<AgentHandover> left = new ArrayList<>();
-        parcels.values().forEach(parcel -> lines.addAll(parcel.walk(tick, time, left)));
-        return new Walked(lines, left);
+        List<AgentHandover> owned = new ArrayList<>();
+        parcels.forEach((id, parcel) -> {
+            parcel.ghosts(ghosts.getOrDefault(id, List.of()));
+            lines.addAll(parcel.walk(tick, time, left));
+            owned.addAll(parcel.owned());
+        });
+        return new Walked(lines, left, owned);
     }
 
     @Override

@@ -13,18 +13,21 @@ import java.util.Map;
 
 /**
  * Every parcel of a split game, as its tick reaches them: one call per step of the tick, which
- * returns once every parcel concerned has done its part. The parcels may be objects of this JVM
+ * returns once every parcel concerned has done its part. Parcels without agents of their own take
+ * part only when asked about their fruit or their agents on a path. The parcels may be objects of this JVM
  * ({@link LocalParcels}) or sharded entities of a cluster.
  */
 public interface Parcels {
 
     /**
-     * What the parcels said while applying the tick's messages, and the grasps they were asked for.
+     * What the parcels said while applying the tick's messages, the grasps they were asked for, and
+     * their own agents as the actions left them.
      *
      * @param lines  their lines
      * @param claims the grasps, each with the place of its request
+     * @param owned  the own agents of the parcels that applied messages
      */
-    record Applied(List<KeyedLine> lines, List<Parcel.KeyedClaim> claims) {}
+    record Applied(List<KeyedLine> lines, List<Parcel.KeyedClaim> claims, List<AgentHandover> owned) {}
 
     /**
      * What the parcels said while deciding the grasps, and the fruit taken.
@@ -35,28 +38,27 @@ public interface Parcels {
     record Grasped(List<KeyedLine> lines, List<Parcel.Taken> taken) {}
 
     /**
-     * What the parcels said while walking their agents, and the agents they left to be walked with
-     * other parcels' agents.
+     * What the parcels said while walking their agents, the agents they left to be walked with other
+     * parcels' agents, and their own agents where they walked to.
      *
      * @param lines their lines
      * @param left  the agents left
+     * @param owned the own agents of every parcel that has some
      */
-    record Walked(List<KeyedLine> lines, List<AgentHandover> left) {}
+    record Walked(List<KeyedLine> lines, List<AgentHandover> left, List<AgentHandover> owned) {}
 
     /** Each named parcel takes these agents as its own. */
     void own(Map<ParcelId, List<OwnedAgent>> agents);
 
-    /** Every parcel's ghosts anew: those named get these, the others none. */
-    void ghosts(Map<ParcelId, List<OwnedAgent>> ghosts);
-
     /** Each named parcel gives up these agents. */
     void release(Map<ParcelId, List<String>> names);
 
-    /** Every parcel's own agents as they are now, by parcel. */
-    Map<ParcelId, List<AgentHandover>> owned();
-
-    /** The perceptions due at {@code tick}: every parcel's lines. */
-    List<KeyedLine> perceive(long tick, double time);
+    /**
+     * The perceptions due at {@code tick}: every parcel that has agents of its own takes its ghosts
+     * anew from {@code ghosts} (none when not named: only parcels with agents of their own need
+     * ghosts), then perceives; returns their lines.
+     */
+    List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts);
 
     /** The first contact on each path, from the parcels named for it; null for a path that meets none. */
     Map<PathQuery, FirstContact> firstAlong(Map<ParcelId, List<PathQuery>> paths);
@@ -70,8 +72,11 @@ public interface Parcels {
     /** Each named parcel forgets fruit taken in its halo. */
     void fruitTaken(Map<ParcelId, List<String>> fruit);
 
-    /** Every parcel walks its agents to simulated {@code time}. */
-    Walked walk(long tick, double time);
+    /**
+     * Every parcel that has agents of its own takes its ghosts anew from {@code ghosts}, as the
+     * tick's actions left them, and walks its agents to simulated {@code time}.
+     */
+    Walked walk(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts);
 
     /** Each named parcel puts its agents where they were walked together with others. */
     void walked(Map<ParcelId, List<AgentHandover>> agents);

@@ -210,13 +210,14 @@ public final class SplitGame implements Inbox {
             String name = driven.agent().name();
             owners.put(name, SessionRef.of(driven.owner()));
             labels.put(driven.owner().id(), driven.label());
-            states.put(name, driven.agent());
-            ParcelId home = grid.of(driven.agent().position());
+            // Parcels simulate agents; their models are for viewers, and may be megabytes each.
+            AgentHandover agent = driven.agent().withoutModel();
+            states.put(name, agent);
+            ParcelId home = grid.of(agent.position());
             where.put(name, home);
-            homes.computeIfAbsent(home, id -> new ArrayList<>()).add(owned(driven.agent()));
+            homes.computeIfAbsent(home, id -> new ArrayList<>()).add(owned(agent));
         }
         parcels.own(homes);
-        refreshGhosts();
     }
 
     private OwnedAgent owned(AgentHandover agent) {
@@ -264,7 +265,7 @@ public final class SplitGame implements Inbox {
         own.cause(LineKey.of(tick, Step.TICK));
         own.sent(tick, time, Audience.ALL, null, new TickMessage(tick, time));
         List<KeyedLine> lines = new ArrayList<>(own.take());
-        List<KeyedLine> perceived = parcels.perceive(tick, time);
+        List<KeyedLine> perceived = parcels.perceive(tick, time, ghosts());
         countSightings(perceived);
         lines.addAll(perceived);
         merge.write(lines);
@@ -287,14 +288,11 @@ public final class SplitGame implements Inbox {
         List<KeyedLine> lines = new ArrayList<>(own.take());
         Parcels.Applied applied = parcels.apply(tick, time, acts, pathsBeyondHalos(acts));
         lines.addAll(applied.lines());
-        refreshStates();
-        refreshGhosts(); // as the tick's actions left them: facing and walking
+        applied.owned().forEach(agent -> states.put(agent.name(), agent)); // facing and walking as the actions left them
         boolean collected = grasp(applied.claims(), lines);
         double next = (tick + 1) * config.tickSeconds();
         walk(next, lines);
-        refreshStates();
         handOver();
-        refreshGhosts();
         if (collected) {
             own.cause(LineKey.of(tick, Step.SCORE));
             own.sent(tick, next, Audience.ALL, null, new ScoreUpdateMessage(tick, scores.ranking()));
@@ -467,22 +465,19 @@ public final class SplitGame implements Inbox {
 
     /** Walks every agent to {@code next}: parcel by parcel, and the sets across borders together. */
     private void walk(double next, List<KeyedLine> lines) {
-        Parcels.Walked walked = parcels.walk(tick, next);
+        Parcels.Walked walked = parcels.walk(tick, next, ghosts());
         lines.addAll(walked.lines());
+        walked.owned().forEach(agent -> states.put(agent.name(), agent));
         if (!walked.left().isEmpty()) {
             counts.walkedTogether += walked.left().size();
             own.byAgent(tick, Step.WALK);
             Map<ParcelId, List<AgentHandover>> back = new TreeMap<>();
             for (AgentHandover agent : PartialSimulation.walkTogether(walked.left(), config, tick, next, own)) {
                 back.computeIfAbsent(where.get(agent.name()), id -> new ArrayList<>()).add(agent);
+                states.put(agent.name(), agent);
             }
             parcels.walked(back);
         }
-    }
-
-    /** Every agent as its parcel has it now. */
-    private void refreshStates() {
-        parcels.owned().values().forEach(own -> own.forEach(agent -> states.put(agent.name(), agent)));
     }
 
     /** Agents that walked out of their parcel's square go to the parcel they walked into. */
@@ -505,19 +500,23 @@ public final class SplitGame implements Inbox {
         }
     }
 
-    /** Every parcel's ghosts anew: the agents of other parcels within its halo, as they are now. */
-    private void refreshGhosts() {
+    /**
+     * The ghosts of every parcel that has agents of its own: the agents of other parcels within its
+     * halo, as they are now. Parcels without agents of their own need none.
+     */
+    private Map<ParcelId, List<OwnedAgent>> ghosts() {
+        Set<ParcelId> holding = new HashSet<>(where.values());
         Map<ParcelId, List<OwnedAgent>> ghosts = new TreeMap<>();
         for (AgentHandover agent : states.values()) {
             ParcelId home = where.get(agent.name());
             OwnedAgent ghost = owned(agent);
             for (ParcelId id : grid.seeing(agent.position().x(), agent.position().z())) {
-                if (!id.equals(home)) {
+                if (!id.equals(home) && holding.contains(id)) {
                     ghosts.computeIfAbsent(id, i -> new ArrayList<>()).add(ghost);
                 }
             }
         }
-        parcels.ghosts(ghosts);
+        return ghosts;
     }
 
     private void end(long ended, String reason) {

@@ -77,6 +77,21 @@ public final class Gateway implements Inbox {
                 .build();
     }
 
+    /** The tick the game is at, as the tick last said. */
+    public long tick() {
+        return clockTick;
+    }
+
+    /** The game's phase, as the tick last said. */
+    public GamePhase phase() {
+        return phase;
+    }
+
+    /** How many clients are connected to this gateway. */
+    public int clients() {
+        return sessions.size();
+    }
+
     private long number(ClientSession session) {
         return node | session.id();
     }

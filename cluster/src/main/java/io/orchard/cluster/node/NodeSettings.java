@@ -9,7 +9,8 @@ import java.util.stream.Collectors;
 /**
  * The Pekko settings of an Orchard node: a cluster member reached at {@code host:port} (port 0: any
  * free one), joining through the seed nodes given, its parcels never passivated (a parcel's state is
- * the game's), and the node left to the program on shutdown rather than ending the JVM.
+ * the game's), messages of up to 2 MiB between nodes, and the node left to the program on shutdown
+ * rather than ending the JVM.
  */
 public final class NodeSettings {
 
@@ -33,6 +34,9 @@ public final class NodeSettings {
                   actor.provider = "cluster"
                   remote.artery.canonical.hostname = "%s"
                   remote.artery.canonical.port = %d
+                  # A tick's lines of a crowded parcel may pass the default 256 KiB.
+                  remote.artery.advanced.maximum-frame-size = 2 MiB
+                  remote.artery.advanced.buffer-pool-size = 32
                   cluster {
                     seed-nodes = %s
                     downing-provider-class = "org.apache.pekko.cluster.sbr.SplitBrainResolverProvider"

@@ -20,17 +20,11 @@ public sealed interface ParcelCommand extends ClusterMessage {
     /** Take these agents as own; answered {@link ParcelReply.Done}. */
     record Own(List<OwnedAgent> agents, String replyTo) implements ParcelCommand {}
 
-    /** Hold these ghosts and no other; answered {@link ParcelReply.Done}. */
-    record Ghosts(List<OwnedAgent> ghosts, String replyTo) implements ParcelCommand {}
-
     /** Give up these own agents; answered {@link ParcelReply.Done}. */
     record Release(List<String> names, String replyTo) implements ParcelCommand {}
 
-    /** Say the own agents as they are now; answered {@link ParcelReply.Owned}. */
-    record ListOwned(String replyTo) implements ParcelCommand {}
-
-    /** The perceptions due at {@code tick}; answered {@link ParcelReply.Said}. */
-    record Perceive(long tick, double time, String replyTo) implements ParcelCommand {}
+    /** Hold these ghosts and no other, then the perceptions due at {@code tick}; answered {@link ParcelReply.Said}. */
+    record Perceive(long tick, double time, List<OwnedAgent> ghosts, String replyTo) implements ParcelCommand {}
 
     /** The first own agent on each path; answered {@link ParcelReply.Contacts}. */
     record FirstAlong(List<PathQuery> paths, String replyTo) implements ParcelCommand {}
@@ -62,8 +56,8 @@ public sealed interface ParcelCommand extends ClusterMessage {
     /** Forget fruit taken in the halo; answered {@link ParcelReply.Done}. */
     record FruitTaken(List<String> fruit, String replyTo) implements ParcelCommand {}
 
-    /** Walk the own agents to {@code time}; answered {@link ParcelReply.Walked}. */
-    record Walk(long tick, double time, String replyTo) implements ParcelCommand {}
+    /** Hold these ghosts and no other, then walk the own agents to {@code time}; answered {@link ParcelReply.Walked}. */
+    record Walk(long tick, double time, List<OwnedAgent> ghosts, String replyTo) implements ParcelCommand {}
 
     /** Put own agents where they were walked with others; answered {@link ParcelReply.Done}. */
     record PutWalked(List<AgentHandover> agents, String replyTo) implements ParcelCommand {}

@@ -51,13 +51,10 @@ public final class ParcelEntity {
     private static ParcelReply handle(Parcel parcel, ParcelCommand command) {
         if (command instanceof ParcelCommand.Own c) {
             parcel.own(c.agents());
-        } else if (command instanceof ParcelCommand.Ghosts c) {
-            parcel.ghosts(c.ghosts());
         } else if (command instanceof ParcelCommand.Release c) {
             parcel.release(c.names());
-        } else if (command instanceof ParcelCommand.ListOwned) {
-            return new ParcelReply.Owned(parcel.owned());
         } else if (command instanceof ParcelCommand.Perceive c) {
+            parcel.ghosts(c.ghosts());
             return new ParcelReply.Said(lines(parcel.perceive(c.tick(), c.time())));
         } else if (command instanceof ParcelCommand.FirstAlong c) {
             return new ParcelReply.Contacts(parcel.firstAlong(c.paths()));
@@ -66,7 +63,8 @@ public final class ParcelEntity {
             c.answers().forEach(a -> answers.put(a.path(), a.contact()));
             List<KeyedLine> said = parcel.apply(c.tick(), c.time(), c.acts().stream().map(Wire.Act::act).toList(),
                     answers);
-            return new ParcelReply.Applied(lines(said), parcel.takeClaims().stream().map(Wire.Grasp::of).toList());
+            return new ParcelReply.Applied(lines(said), parcel.takeClaims().stream().map(Wire.Grasp::of).toList(),
+                    parcel.owned());
         } else if (command instanceof ParcelCommand.Grasp c) {
             Map<String, LineKey> first = new HashMap<>();
             c.firstClaims().forEach(f -> first.put(f.fruit(), f.key()));
@@ -77,8 +75,9 @@ public final class ParcelEntity {
         } else if (command instanceof ParcelCommand.FruitTaken c) {
             parcel.fruitTaken(c.fruit());
         } else if (command instanceof ParcelCommand.Walk c) {
+            parcel.ghosts(c.ghosts());
             List<AgentHandover> left = new ArrayList<>();
-            return new ParcelReply.Walked(lines(parcel.walk(c.tick(), c.time(), left)), left);
+            return new ParcelReply.Walked(lines(parcel.walk(c.tick(), c.time(), left)), left, parcel.owned());
         } else if (command instanceof ParcelCommand.PutWalked c) {
             parcel.walked(c.agents());
         }

@@ -11,21 +11,18 @@ public sealed interface ParcelReply extends ClusterMessage {
     /** Done, with nothing to say. */
     record Done() implements ParcelReply {}
 
-    /** The own agents as they are now. */
-    record Owned(List<AgentHandover> agents) implements ParcelReply {}
-
     /** The lines said. */
     record Said(List<Wire.Line> lines) implements ParcelReply {}
 
     /** The first contact on each path asked about, in order; null for a path that meets none. */
     record Contacts(List<FirstContact> contacts) implements ParcelReply {}
 
-    /** The lines said applying the tick's messages, and the grasps asked for. */
-    record Applied(List<Wire.Line> lines, List<Wire.Grasp> claims) implements ParcelReply {}
+    /** The lines said applying the tick's messages, the grasps asked for, and the own agents after. */
+    record Applied(List<Wire.Line> lines, List<Wire.Grasp> claims, List<AgentHandover> owned) implements ParcelReply {}
 
     /** The lines said deciding the grasps, and the fruit taken. */
     record Grasped(List<Wire.Line> lines, List<Parcel.Taken> taken) implements ParcelReply {}
 
-    /** The lines said walking, and the agents left to be walked with others. */
-    record Walked(List<Wire.Line> lines, List<AgentHandover> left) implements ParcelReply {}
+    /** The lines said walking, the agents left to be walked with others, and the own agents after. */
+    record Walked(List<Wire.Line> lines, List<AgentHandover> left, List<AgentHandover> owned) implements ParcelReply {}
 }

@@ -17,11 +17,9 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
@@ -35,8 +33,7 @@ import org.apache.pekko.cluster.sharding.typed.javadsl.Entity;
 /**
  * The parcels of a split game as Pekko sharded entities ({@link ParcelEntity}), wherever the cluster
  * places them: each step of the tick asks every parcel concerned at once and waits for all their
- * answers. Only parcels with agents of their own are asked to perceive and walk; ghosts go to the
- * parcels that hold some or held some before.
+ * answers. Only parcels with agents of their own are asked to perceive and walk, with their ghosts.
  */
 public final class ShardedParcels implements Parcels {
 
@@ -46,7 +43,6 @@ public final class ShardedParcels implements Parcels {
     private final ClusterSharding sharding;
     private final ActorRefResolver resolver;
     private final Map<ParcelId, Integer> agents = new TreeMap<>();
-    private Set<ParcelId> ghosted = new HashSet<>();
 
     private ShardedParcels(ActorSystem<?> system) {
         this.sharding = ClusterSharding.get(system);
@@ -101,14 +97,6 @@ public final class ShardedParcels implements Parcels {
     }
 
     @Override
-    public void ghosts(Map<ParcelId, List<OwnedAgent>> ghosts) {
-        Map<ParcelId, List<OwnedAgent>> all = new TreeMap<>(ghosts);
-        ghosted.forEach(id -> all.putIfAbsent(id, List.of()));
-        ghosted = new HashSet<>(ghosts.keySet());
-        tellEach(all, ParcelCommand.Ghosts::new);
-    }
-
-    @Override
     public void release(Map<ParcelId, List<String>> names) {
         names.forEach((id, list) -> agents.merge(id, -list.size(), Integer::sum));
         agents.values().removeIf(count -> count <= 0);
@@ -116,17 +104,9 @@ public final class ShardedParcels implements Parcels {
     }
 
     @Override
-    public Map<ParcelId, List<AgentHandover>> owned() {
-        Map<ParcelId, ParcelReply.Owned> answers = ask(agents.keySet(), id -> ParcelCommand.ListOwned::new);
-        Map<ParcelId, List<AgentHandover>> owned = new TreeMap<>();
-        answers.forEach((id, answer) -> owned.put(id, answer.agents()));
-        return owned;
-    }
-
-    @Override
-    public List<KeyedLine> perceive(long tick, double time) {
-        Map<ParcelId, ParcelReply.Said> said = ask(agents.keySet(),
-                id -> replyTo -> new ParcelCommand.Perceive(tick, time, replyTo));
+    public List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
+        Map<ParcelId, ParcelReply.Said> said = ask(agents.keySet(), id -> replyTo -> new ParcelCommand.Perceive(tick,
+                time, ghosts.getOrDefault(id, List.of()), replyTo));
         return lines(said.values().stream().map(ParcelReply.Said::lines).toList());
     }
 
@@ -147,8 +127,12 @@ public final class ShardedParcels implements Parcels {
         Map<ParcelId, ParcelReply.Applied> applied = ask(acts.keySet(), id -> replyTo -> new ParcelCommand.Apply(tick,
                 time, acts.get(id).stream().map(Wire.Act::of).toList(), far, replyTo));
         List<Parcel.KeyedClaim> claims = new ArrayList<>();
-        applied.values().forEach(a -> a.claims().forEach(claim -> claims.add(claim.keyed())));
-        return new Applied(lines(applied.values().stream().map(ParcelReply.Applied::lines).toList()), claims);
+        List<AgentHandover> owned = new ArrayList<>();
+        applied.values().forEach(a -> {
+            a.claims().forEach(claim -> claims.add(claim.keyed()));
+            owned.addAll(a.owned());
+        });
+        return new Applied(lines(applied.values().stream().map(ParcelReply.Applied::lines).toList()), claims, owned);
     }
 
     @Override
@@ -169,12 +153,16 @@ public final class ShardedParcels implements Parcels {
     }
 
     @Override
-    public Walked walk(long tick, double time) {
-        Map<ParcelId, ParcelReply.Walked> walked = ask(agents.keySet(),
-                id -> replyTo -> new ParcelCommand.Walk(tick, time, replyTo));
+    public Walked walk(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
+        Map<ParcelId, ParcelReply.Walked> walked = ask(agents.keySet(), id -> replyTo -> new ParcelCommand.Walk(tick,
+                time, ghosts.getOrDefault(id, List.of()), replyTo));
         List<AgentHandover> left = new ArrayList<>();
-        walked.values().forEach(w -> left.addAll(w.left()));
-        return new Walked(lines(walked.values().stream().map(ParcelReply.Walked::lines).toList()), left);
+        List<AgentHandover> owned = new ArrayList<>();
+        walked.values().forEach(w -> {
+            left.addAll(w.left());
+            owned.addAll(w.owned());
+        });
+        return new Walked(lines(walked.values().stream().map(ParcelReply.Walked::lines).toList()), left, owned);
     }
 
     @Override

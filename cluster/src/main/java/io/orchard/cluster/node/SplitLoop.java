@@ -59,6 +59,9 @@ final class SplitLoop implements Runnable {
                 }
                 game.endTick();
                 clock.accept(game.phase(), game.tick());
+                if (game.phase() == Phase.OVER) {
+                    log.info("the game is over at tick {}; across parcels' borders: {}", game.tick(), game.counts());
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -49,6 +49,15 @@ public record AgentHandover(String name, long session, Body body, @Nullable Mode
     }
 
     /**
+     * This agent without its model: what the parts of a world that simulate it need (a model is for
+     * viewers, and may be megabytes).
+     */
+    public AgentHandover withoutModel() {
+        return model == null ? this : new AgentHandover(name, session, body, null, position, heading, walk, joints,
+                timeSensors, resumeToken, perceptionRequested, perceptionEvery, nextPerceptionTick);
+    }
+
+    /**
      * A walk in progress: a straight segment at constant speed.
      *
      * @param from      where it started
