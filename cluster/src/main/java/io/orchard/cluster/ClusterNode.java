@@ -117,13 +117,15 @@ public final class ClusterNode implements AutoCloseable {
 
     /**
      * A line on the node's health: its cluster address, the members up, the game's tick and phase as
-     * the tick last told this node, its clients and the parcels it hosts.
+     * the tick last told this node, its clients, what it sent to other nodes and the parcels it hosts.
      */
     public String status() {
         List<ParcelId> parcels = parcelsHere();
-        return String.format(java.util.Locale.ROOT, "node %s  members up %d  %s  tick %d  clients %d  parcels %d %s",
+        long[] sent = io.orchard.cluster.node.ClusterSerializer.sent();
+        return String.format(java.util.Locale.ROOT, "node %s  members up %d  %s  tick %d  clients %d  sent %d "
+                        + "messages, %d bytes to other nodes  parcels %d %s",
                 Cluster.get(system).selfMember().address().hostPort(), membersUp(),
-                gateway.phase().wireName(), gateway.tick(), gateway.clients(), parcels.size(),
+                gateway.phase().wireName(), gateway.tick(), gateway.clients(), sent[0], sent[1], parcels.size(),
                 parcels.stream().map(ParcelId::toString).toList());
     }
 

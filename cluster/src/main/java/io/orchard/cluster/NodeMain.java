@@ -38,7 +38,8 @@ import picocli.CommandLine.TypeConversionException;
                     + "with its own address."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
         footer = {"It prints the node's health every 5 s: its cluster address, the members up, the game's phase "
-                + "and tick, its clients and the parcels it hosts. Ctrl-C or SIGTERM leaves the cluster."})
+                + "and tick, its clients, what it sent to other nodes and the parcels it hosts. Ctrl-C or SIGTERM "
+                + "leaves the cluster."})
 public final class NodeMain implements Callable<Integer> {
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = Port.class,

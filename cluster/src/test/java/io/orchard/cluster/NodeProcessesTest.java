@@ -42,6 +42,10 @@ class NodeProcessesTest {
     private static final double SECONDS = Double.parseDouble(System.getProperty("orchard.cluster.seconds", "30"));
     /** Agents, a multiple of five: {@code -Dorchard.cluster.agents}, 15 unless set. */
     private static final int AGENTS = Integer.getInteger("orchard.cluster.agents", 15);
+    /** Nodes: {@code -Dorchard.cluster.nodes}, 3 unless set. */
+    private static final int NODES = Integer.getInteger("orchard.cluster.nodes", 3);
+    /** The side of the parcels: {@code -Dorchard.cluster.parcel}, 25 unless set. */
+    private static final String PARCEL = System.getProperty("orchard.cluster.parcel", "25");
     private static final Pattern LISTENING =
             Pattern.compile("node listening for agents and viewers on [^:]+:(\\d+), cluster member at port (\\d+)");
     private static final Pattern COUNTS = Pattern.compile("handOvers=(\\d+), sightingsAcrossBorders=(\\d+)");
@@ -101,7 +105,7 @@ class NodeProcessesTest {
                 "-Xmx512m", "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(), "--port", "0",
                 "--cluster-port", "0", "--seed", String.valueOf(SEED), "--clock", "lockstep", "--time-limit",
                 String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS), "--turn-deadline", "20",
-                "--parcel-size", "25", "--quiet"));
+                "--parcel-size", PARCEL));
         command.addAll(options);
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         nodes.add(process);
@@ -142,6 +146,23 @@ class NodeProcessesTest {
                 + String.join("\n", seen));
     }
 
+    /** Prints what the run measured: each node's CPU and last health line, and the tick's figures. */
+    private void measure(String over) {
+        List<String> said = new ArrayList<>();
+        for (int i = 0; i < nodes.size(); i++) {
+            String cpu = nodes.get(i).info().totalCpuDuration().map(d -> d.toMillis() + " ms of CPU").orElse("?");
+            String health = "";
+            for (String line : outputs.get(i)) {
+                if (line.startsWith("node ")) {
+                    health = line;
+                }
+            }
+            said.add(cpu + "; " + health);
+        }
+        System.out.printf("%d agents, %d nodes, parcels of %s, %.0f s%n%s%n%s%n", AGENTS, NODES, PARCEL, SECONDS, over,
+                String.join("\n", said));
+    }
+
     @Test
     void threeNodeProcessesServeTheGameOneServerServesByteForByte() throws Exception {
         Path single = dir.resolve("server.ndjson");
@@ -155,7 +176,7 @@ class NodeProcessesTest {
         Path cluster = dir.resolve("cluster.ndjson");
         int[] first = node(List.of("--record", cluster.toString()));
         List<Integer> ports = new ArrayList<>(List.of(first[0]));
-        for (int i = 0; i < 2; i++) {
+        for (int i = 1; i < NODES; i++) {
             ports.add(node(List.of("--seed-nodes", "127.0.0.1:" + first[1]))[0]);
         }
         List<AgentController> onCluster = agents();
@@ -170,8 +191,11 @@ class NodeProcessesTest {
             }
             throw new AssertionError(e.getMessage() + said, e);
         }
-        Matcher counts = COUNTS.matcher(await(outputs.get(0), COUNTS, 60));
+        String over = await(outputs.get(0), COUNTS, 60);
+        Matcher counts = COUNTS.matcher(over);
         assertThat(counts.find()).isTrue();
+        Thread.sleep(6_000); // one more health line from every node, with what it sent
+        measure(over);
 
         assertThat(Files.readString(single, StandardCharsets.UTF_8)).as("no turn was missed")
                 .doesNotContain("\"dir\":\"missed\"").contains("\"type\":\"GameOver\"");

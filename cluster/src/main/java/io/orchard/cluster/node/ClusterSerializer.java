@@ -16,6 +16,10 @@ public final class ClusterSerializer extends SerializerWithStringManifest {
     /** Pekko's number for this serializer: unique among the serializers of a system. */
     static final int IDENTIFIER = 7557;
 
+    /** Messages and bytes this JVM's serializers wrote: what its node sent to other nodes. */
+    private static final java.util.concurrent.atomic.AtomicLong MESSAGES = new java.util.concurrent.atomic.AtomicLong();
+    private static final java.util.concurrent.atomic.AtomicLong BYTES = new java.util.concurrent.atomic.AtomicLong();
+
     private static final JsonMapper MAPPER = JsonMapper.builder()
             .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
             .build();
@@ -39,7 +43,15 @@ public final class ClusterSerializer extends SerializerWithStringManifest {
             throw new IllegalArgumentException("this serializer carries the cluster's messages, not "
                     + message.getClass().getName());
         }
-        return MAPPER.writeValueAsBytes(message);
+        byte[] bytes = MAPPER.writeValueAsBytes(message);
+        MESSAGES.incrementAndGet();
+        BYTES.addAndGet(bytes.length);
+        return bytes;
+    }
+
+    /** How many cluster messages, and how many bytes of them, this JVM has sent to other nodes so far. */
+    public static long[] sent() {
+        return new long[] {MESSAGES.get(), BYTES.get()};
     }
 
     @Override

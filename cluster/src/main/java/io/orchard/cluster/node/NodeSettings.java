@@ -37,6 +37,8 @@ public final class NodeSettings {
                   # A tick's lines of a crowded parcel may pass the default 256 KiB.
                   remote.artery.advanced.maximum-frame-size = 2 MiB
                   remote.artery.advanced.buffer-pool-size = 32
+                  # A busy machine may take more than the default 3 s to bind the node's port.
+                  remote.artery.bind.bind-timeout = 30s
                   cluster {
                     seed-nodes = %s
                     downing-provider-class = "org.apache.pekko.cluster.sbr.SplitBrainResolverProvider"

@@ -23,6 +23,8 @@ final class SplitLoop implements Runnable {
     private final SimulationConfig config;
     private final ObjLongConsumer<Phase> clock;
     private volatile boolean stopped;
+    /** How long each tick took, in wall-clock nanoseconds, from its start to its end. */
+    private final java.util.List<Long> ticks = new java.util.ArrayList<>();
 
     SplitLoop(SplitGame game, SimulationConfig config, ObjLongConsumer<Phase> clock) {
         this.game = game;
@@ -32,6 +34,14 @@ final class SplitLoop implements Runnable {
 
     void stop() {
         stopped = true;
+    }
+
+    /** The tick time at this percentile so far, in milliseconds. */
+    private String percentile(int percent) {
+        java.util.List<Long> sorted = new java.util.ArrayList<>(ticks);
+        sorted.sort(null);
+        long nanos = sorted.isEmpty() ? 0 : sorted.get(Math.min(sorted.size() - 1, sorted.size() * percent / 100));
+        return String.format(java.util.Locale.ROOT, "%.1f", nanos / 1e6);
     }
 
     @Override
@@ -47,6 +57,7 @@ final class SplitLoop implements Runnable {
                     due = System.nanoTime();
                     continue;
                 }
+                long started = System.nanoTime();
                 game.beginTick();
                 if (config.clock() == ClockMode.LOCKSTEP) {
                     game.awaitTurns(config.lockstepDeadline());
@@ -58,9 +69,13 @@ final class SplitLoop implements Runnable {
                     }
                 }
                 game.endTick();
+                ticks.add(System.nanoTime() - started);
                 clock.accept(game.phase(), game.tick());
                 if (game.phase() == Phase.OVER) {
-                    log.info("the game is over at tick {}; across parcels' borders: {}", game.tick(), game.counts());
+                    long[] sent = ClusterSerializer.sent();
+                    log.info("the game is over at tick {}; across parcels' borders: {}; ticks p50 {} ms, p99 {} ms; "
+                            + "the tick's node sent {} messages, {} bytes to other nodes", game.tick(), game.counts(),
+                            percentile(50), percentile(99), sent[0], sent[1]);
                 }
             }
         } catch (InterruptedException e) {
