@@ -7,6 +7,7 @@ import io.orchard.cluster.node.NodeSettings;
 import io.orchard.cluster.node.ParcelEntity;
 import io.orchard.cluster.node.ShardedParcels;
 import io.orchard.cluster.node.TickCommand;
+import io.orchard.cluster.node.TickGames;
 import io.orchard.cluster.node.TickSingleton;
 import io.orchard.cluster.parcel.ParcelGrid;
 import io.orchard.cluster.parcel.ParcelId;
@@ -15,6 +16,8 @@ import io.orchard.server.Version;
 import io.orchard.server.net.NetLimits;
 import io.orchard.server.net.NetServer;
 import io.orchard.server.sim.BodyLimits;
+import io.orchard.server.sim.Checkpoint;
+import io.orchard.server.sim.CheckpointFile;
 import io.orchard.server.sim.FileRecorder;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.SimulationConfig;
@@ -29,12 +32,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import org.apache.pekko.actor.typed.ActorRef;
 import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.ActorSystem;
 import org.apache.pekko.actor.typed.Props;
 import org.apache.pekko.actor.typed.javadsl.AskPattern;
 import org.apache.pekko.actor.typed.javadsl.Behaviors;
+import org.apache.pekko.actor.typed.receptionist.Receptionist;
 import org.apache.pekko.cluster.sharding.ShardRegion.CurrentShardRegionState;
 import org.apache.pekko.cluster.sharding.typed.ClusterShardingQuery;
 import org.apache.pekko.cluster.sharding.typed.GetShardRegionState;
@@ -63,11 +68,29 @@ public final class ClusterNode implements AutoCloseable {
     private final ActorSystem<Void> system;
     private final NetServer net;
     private final Gateway gateway;
+    private final ActorRef<TickCommand> tick;
+    private final AtomicLong takenUp;
 
-    private ClusterNode(ActorSystem<Void> system, NetServer net, Gateway gateway) {
+    private ClusterNode(ActorSystem<Void> system, NetServer net, Gateway gateway, ActorRef<TickCommand> tick,
+                        AtomicLong takenUp) {
         this.system = system;
         this.net = net;
         this.gateway = gateway;
+        this.tick = tick;
+        this.takenUp = takenUp;
+    }
+
+    /**
+     * How many parcels with agents of their own the tick, while on this node, kept for a node that
+     * left and gave back to them as they started on another.
+     */
+    public long parcelsTakenUp() {
+        return takenUp.get();
+    }
+
+    /** Saves the game to the cluster-wide checkpoint file at the end of the tick under way, if there is one. */
+    public void checkpoint() {
+        tick.tell(new TickCommand.Control(TickCommand.Command.CHECKPOINT, null));
     }
 
     /** A builder with the defaults: port 7557 and cluster port 2551 on loopback, realtime, parcels of 60. */
@@ -129,6 +152,26 @@ public final class ClusterNode implements AutoCloseable {
                 parcels.stream().map(ParcelId::toString).toList());
     }
 
+    /** Starts the game now without waiting for more agents, wherever the tick runs. Safe from any thread. */
+    public void startGame() {
+        tick.tell(new TickCommand.Control(TickCommand.Command.START, null));
+    }
+
+    /** Pauses the game if it runs. Safe from any thread. */
+    public void pauseGame() {
+        tick.tell(new TickCommand.Control(TickCommand.Command.PAUSE, null));
+    }
+
+    /** Continues the game if it is paused. Safe from any thread. */
+    public void resumeGame() {
+        tick.tell(new TickCommand.Control(TickCommand.Command.RESUME, null));
+    }
+
+    /** Ends the game now, for this reason. Safe from any thread. */
+    public void endGame(String reason) {
+        tick.tell(new TickCommand.Control(TickCommand.Command.END, Objects.requireNonNull(reason, "reason")));
+    }
+
     /** The node's actor system, for programs that look into the cluster. */
     public ActorSystem<Void> system() {
         return system;
@@ -163,6 +206,13 @@ public final class ClusterNode implements AutoCloseable {
         private Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
         private double parcelSize = 60;
         private Path record;
+        private String token;
+        private String operatorToken;
+        private Duration nameReservation = Duration.ofSeconds(60);
+        private Path checkpoint;
+        private Duration checkpointEvery;
+        private Path resume;
+        private Duration downAfter = Duration.ofSeconds(20);
 
         private Builder() {}
 
@@ -250,6 +300,77 @@ public final class ClusterNode implements AutoCloseable {
             return this;
         }
 
+        /** Require clients to present this shared secret in their hello, as a server's {@code token}. */
+        public Builder token(String token) {
+            if (token != null && token.isEmpty()) {
+                throw new IllegalArgumentException("token must not be empty");
+            }
+            this.token = token;
+            return this;
+        }
+
+        /**
+         * Let a client that presents this secret in its hello start, pause and resume the game with
+         * {@code GameControl}, at any node; without one no client controls the game. It must differ
+         * from the {@link #token token}.
+         */
+        public Builder operatorToken(String operatorToken) {
+            if (operatorToken != null && operatorToken.isEmpty()) {
+                throw new IllegalArgumentException("operator token must not be empty");
+            }
+            this.operatorToken = operatorToken;
+            return this;
+        }
+
+        /**
+         * How long the name and score of an agent whose connection dropped stay its controller's
+         * (default 60 s), as on one server; zero frees the name at once.
+         */
+        public Builder nameReservation(Duration time) {
+            if (time == null || time.isNegative()) {
+                throw new IllegalArgumentException("name reservation must be zero or more, was " + time);
+            }
+            this.nameReservation = time;
+            return this;
+        }
+
+        /**
+         * Save the whole game to {@code file}, a file every node reaches (on one machine, a local
+         * path; on several, a shared file system), the same on every node: when the game starts,
+         * after every tick in which fruit was collected, when it ends, when the tick leaves a node,
+         * and, unless {@code every} is null, every {@code every} of wall-clock time. When a node is
+         * lost, the world rolls back to it. Each write is atomic.
+         */
+        public Builder checkpoint(Path file, Duration every) {
+            this.checkpoint = Objects.requireNonNull(file, "checkpoint file");
+            if (every != null && (every.isNegative() || every.isZero())) {
+                throw new IllegalArgumentException("checkpoint interval must be positive, was " + every);
+            }
+            this.checkpointEvery = every;
+            return this;
+        }
+
+        /**
+         * Go on with the game saved in a checkpoint file (of this node's seed) instead of starting a
+         * new one, as a server's {@code --resume}: its agents wait for their controllers.
+         */
+        public Builder resume(Path file) {
+            this.resume = Objects.requireNonNull(file, "checkpoint file to resume");
+            return this;
+        }
+
+        /**
+         * How long a node that stopped answering stays unreachable before the others take it for
+         * lost (20 s by default): too short, and a node busy for a moment is lost too.
+         */
+        public Builder downAfter(Duration time) {
+            if (time == null || time.isNegative() || time.isZero()) {
+                throw new IllegalArgumentException("down-after must be positive, was " + time);
+            }
+            this.downAfter = time;
+            return this;
+        }
+
         private static int checkPort(int port, String what) {
             if (port < 0 || port > 65535) {
                 throw new IllegalArgumentException(what + " must be 0 to 65535, was " + port);
@@ -264,10 +385,15 @@ public final class ClusterNode implements AutoCloseable {
          * @throws IOException when the gateway's port cannot be bound
          */
         public ClusterNode start() throws IOException {
+            if (token != null && token.equals(operatorToken)) {
+                throw new IllegalArgumentException("the operator token must differ from the token: every "
+                        + "client holds the token, and would control the game");
+            }
             SimulationConfig config = new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
                     SimulationConfig.DEFAULT.agentsPerSession(), BodyLimits.DEFAULT);
+            checkResume();
             ActorSystem<Void> system = ActorSystem.create(Behaviors.empty(), NodeSettings.SYSTEM,
-                    NodeSettings.of(bind, clusterPort, seedNodes));
+                    NodeSettings.of(bind, clusterPort, seedNodes, downAfter));
             try {
                 Cluster cluster = Cluster.get(system);
                 if (seedNodes.isEmpty()) {
@@ -275,21 +401,21 @@ public final class ClusterNode implements AutoCloseable {
                 }
                 World world = WorldGenerator.standard(seed).generate();
                 ParcelGrid grid = SplitGame.grid(world, config, parcelSize);
-                ShardedParcels parcels = ShardedParcels.start(system, grid, world, config);
-                Path recording = record;
-                long worldSeed = seed;
-                ActorRef<TickCommand> tick = ClusterSingleton.get(system).init(SingletonActor.of(
-                        TickSingleton.create(recorder -> new SplitGame(world, config, worldSeed, Version.current(),
-                                recorder, List.of(), parcelSize, (name, radius) -> null, g -> parcels),
-                                () -> open(recording)), "tick"));
-                Gateway gateway = new Gateway(cluster.selfMember().address().getPort().orElseThrow(), tick,
+                ShardedParcels parcels = new ShardedParcels(system, grid);
+                Gateway gateway = new Gateway((int) (cluster.selfMember().uniqueAddress().longUid() & 0x7fffffffL),
                         world.bounds(), config);
+                AtomicLong takenUp = new AtomicLong();
+                ActorRef<TickCommand> tick = ClusterSingleton.get(system).init(SingletonActor.of(TickSingleton.create(
+                        new TickSingleton.Setup(making(config, parcels), parcels, gateway, checkpoint, checkpointEvery,
+                                resume, takenUp)), "tick"));
+                ShardedParcels.host(system, grid, world, config, tick);
                 ActorRef<GatewayCommand> actor = system.systemActorOf(Gateway.behavior(gateway), "gateway",
                         Props.empty());
-                gateway.attach(ActorRefResolver.get(system).toSerializationFormat(actor));
-                NetServer net = NetServer.start(new InetSocketAddress(bind, port), gateway, null, null,
+                gateway.attach(ActorRefResolver.get(system).toSerializationFormat(actor), tick);
+                system.receptionist().tell(Receptionist.register(Gateway.KEY, actor));
+                NetServer net = NetServer.start(new InetSocketAddress(bind, port), gateway, token, operatorToken,
                         NetLimits.DEFAULT);
-                return new ClusterNode(system, net, gateway);
+                return new ClusterNode(system, net, gateway, tick, takenUp);
             } catch (IOException | RuntimeException e) {
                 system.terminate();
                 throw e;
@@ -300,12 +426,45 @@ public final class ClusterNode implements AutoCloseable {
             }
         }
 
-        private static Recorder open(Path file) {
+        /** How the tick makes its game on this node: new from the seed, or from a saved one. */
+        private TickGames making(SimulationConfig config, ShardedParcels parcels) {
+            long worldSeed = seed;
+            double size = parcelSize;
+            Duration reservation = nameReservation;
+            Path recording = record;
+            java.util.function.BiFunction<World, Recorder, SplitGame> game = (world, recorder) -> {
+                SplitGame made = new SplitGame(world, config, worldSeed, Version.current(), recorder, List.of(), size,
+                        (name, radius) -> null, g -> parcels);
+                made.reserveDroppedNames(reservation);
+                return made;
+            };
+            return new TickGames(
+                    recorder -> game.apply(WorldGenerator.standard(worldSeed).generate(), recorder),
+                    (recorder, saved) -> {
+                        SplitGame made = game.apply(World.fromScenario(saved.world()), recorder);
+                        made.restore(saved);
+                        return made;
+                    },
+                    append -> open(recording, append));
+        }
+
+        /** A saved game to go on with must be of this node's world: its seed. */
+        private void checkResume() throws IOException {
+            if (resume != null) {
+                Checkpoint saved = CheckpointFile.read(resume);
+                if (saved.seed() != seed) {
+                    throw new IllegalArgumentException("the saved game " + resume + " is of seed " + saved.seed()
+                            + ", this node's world of seed " + seed + ": start the node with --seed " + saved.seed());
+                }
+            }
+        }
+
+        private static Recorder open(Path file, boolean append) {
             if (file == null) {
                 return Recorder.NONE;
             }
             try {
-                return FileRecorder.open(file);
+                return FileRecorder.open(file, append);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot record to " + file, e);
             }

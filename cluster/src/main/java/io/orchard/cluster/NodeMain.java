@@ -5,8 +5,13 @@ import io.orchard.cli.Decimal;
 import io.orchard.cli.Seed;
 import io.orchard.cli.Whole;
 import io.orchard.protocol.value.ClockMode;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -38,8 +43,9 @@ import picocli.CommandLine.TypeConversionException;
                     + "with its own address."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
         footer = {"It prints the node's health every 5 s: its cluster address, the members up, the game's phase "
-                + "and tick, its clients, what it sent to other nodes and the parcels it hosts. Ctrl-C or SIGTERM "
-                + "leaves the cluster."})
+                + "and tick, its clients, what it sent to other nodes and the parcels it hosts. Console commands, "
+                + "for the game wherever its tick runs: start, pause, continue, status, checkpoint, stop. Ctrl-C "
+                + "or SIGTERM leaves the cluster."})
 public final class NodeMain implements Callable<Integer> {
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "7557", converter = Port.class,
@@ -90,6 +96,43 @@ public final class NodeMain implements Callable<Integer> {
             description = "Record the game to FILE, on the node where the tick runs")
     private Path record;
 
+    @Option(names = "--checkpoint", paramLabel = "FILE",
+            description = "Save the whole game to FILE, the same file for every node (one machine: a local path; "
+                    + "several: a shared file system): when it starts, when fruit is collected, at the end, on the "
+                    + "console's checkpoint command, every --checkpoint-every seconds and when the tick's node leaves. "
+                    + "When a node is lost, the world goes back to it")
+    private Path checkpoint;
+
+    @Option(names = "--checkpoint-every", paramLabel = "SECONDS", defaultValue = "60", converter = Every.class,
+            description = "With --checkpoint, also save every SECONDS of wall-clock time, the most play a lost "
+                    + "node loses; 0 for never (default: ${DEFAULT-VALUE})")
+    private double checkpointEvery;
+
+    @Option(names = "--resume", paramLabel = "FILE",
+            description = "Go on with the game saved in a checkpoint FILE of this seed (its agents wait for their "
+                    + "controllers' resume tokens), instead of a new one")
+    private Path resume;
+
+    @Option(names = "--down-after", paramLabel = "SECONDS", defaultValue = "20", converter = DownAfter.class,
+            description = "How long a node that stopped answering stays unreachable before the others take it for "
+                    + "lost (default: ${DEFAULT-VALUE})")
+    private double downAfter;
+
+    @Option(names = "--token", paramLabel = "SECRET",
+            description = "Require clients to present this token in their hello: the same on every node")
+    private String token;
+
+    @Option(names = "--operator-token", paramLabel = "SECRET", defaultValue = "${env:ORCHARD_OPERATOR_TOKEN}",
+            description = "Let a client that presents this token in its hello, at any node, start, pause and resume "
+                    + "the game (GameControl); without it only the nodes' consoles do. Also read from "
+                    + "ORCHARD_OPERATOR_TOKEN")
+    private String operatorToken;
+
+    @Option(names = "--name-reservation", paramLabel = "SECONDS", defaultValue = "60", converter = Reservation.class,
+            description = "How long a dropped agent's name and score stay its controller's: meanwhile only its "
+                    + "resume token registers the name, at any node; 0 frees it at once (default: ${DEFAULT-VALUE})")
+    private double nameReservation;
+
     @Option(names = "--quiet", description = "Do not print the node's health")
     private boolean quiet;
 
@@ -99,21 +142,27 @@ public final class NodeMain implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
+    private final InputStream console;
     private final PrintStream out;
 
-    private NodeMain(PrintStream out) {
+    private NodeMain(InputStream console, PrintStream out) {
+        this.console = console;
         this.out = out;
     }
 
     /** Runs a node with the command line {@code args} and exits with its status. */
     public static void main(String[] args) {
-        System.exit(CommandLineErrors.execute(command(System.out, System.err).setCommandName("orchard node"),
-                List.of(args), System.err));
+        System.exit(CommandLineErrors.execute(command(System.in, System.out, System.err)
+                .setCommandName("orchard node"), List.of(args), System.err));
     }
 
-    /** The command line as a picocli command named {@code node}, printing to {@code out} and {@code err}. */
-    public static CommandLine command(PrintStream out, PrintStream err) {
-        return new CommandLine(new NodeMain(out)).setOut(new PrintWriter(out, true)).setErr(new PrintWriter(err, true));
+    /**
+     * The command line as a picocli command named {@code node}, reading console commands from
+     * {@code console} and printing to {@code out} and {@code err}.
+     */
+    public static CommandLine command(InputStream console, PrintStream out, PrintStream err) {
+        return new CommandLine(new NodeMain(console, out)).setOut(new PrintWriter(out, true))
+                .setErr(new PrintWriter(err, true));
     }
 
     /** Runs the node as the options say, until the JVM is asked to end. */
@@ -123,7 +172,16 @@ public final class NodeMain implements Callable<Integer> {
         try {
             builder.bind(bind).port(port).clusterPort(clusterPort).seedNodes(seedNodes).seed(seed).clock(clock)
                     .tickRate(tickRate).waitFor(waitFor).timeLimit(timeLimit).parcelSize(parcelSize)
-                    .lockstepDeadline(Duration.ofNanos((long) (turnDeadline * 1e9)));
+                    .lockstepDeadline(Duration.ofNanos((long) (turnDeadline * 1e9))).token(token)
+                    .operatorToken(operatorToken).nameReservation(Duration.ofMillis((long) (nameReservation * 1000)))
+                    .downAfter(Duration.ofMillis((long) (downAfter * 1000)));
+            if (checkpoint != null) {
+                builder.checkpoint(checkpoint, checkpointEvery > 0 ? Duration.ofMillis((long) (checkpointEvery * 1000))
+                        : null);
+            }
+            if (resume != null) {
+                builder.resume(resume);
+            }
             if (record != null) {
                 builder.record(record);
             }
@@ -140,12 +198,60 @@ public final class NodeMain implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(leave);
         out.printf(Locale.ROOT, "node listening for agents and viewers on %s:%d, cluster member at port %d%n", bind,
                 node.port(), node.clusterPort());
+        Thread commands = new Thread(() -> readCommands(node), "orchard-node-console");
+        commands.setDaemon(true);
+        commands.start();
         while (!ended.await(5, java.util.concurrent.TimeUnit.SECONDS)) {
             if (!quiet) {
                 out.println(node.status());
             }
         }
         return 0;
+    }
+
+    /** The console's commands, for the game wherever its tick runs. */
+    private void readCommands(ClusterNode node) {
+        try (BufferedReader in = new BufferedReader(new InputStreamReader(console, StandardCharsets.UTF_8))) {
+            for (String line = in.readLine(); line != null; line = in.readLine()) {
+                switch (line.strip().toLowerCase(Locale.ROOT)) {
+                    case "" -> { }
+                    case "start" -> node.startGame();
+                    case "pause" -> node.pauseGame();
+                    case "continue", "resume" -> node.resumeGame();
+                    case "status" -> out.println(node.status());
+                    case "checkpoint" -> {
+                        node.checkpoint();
+                        out.println(checkpoint == null ? "no checkpoint file: start the nodes with --checkpoint FILE"
+                                : "the game is saved to " + checkpoint + " at the end of the tick");
+                    }
+                    case "stop", "quit" -> node.endGame("stopped from a node's console");
+                    default -> out.println("unknown command '" + line.strip()
+                            + "'; commands: start, pause, continue, status, checkpoint, stop");
+                }
+            }
+        } catch (IOException e) {
+            // Unreadable input is closed input.
+        }
+        out.println("console input closed: the node runs on without its console; stop it with Ctrl-C or kill "
+                + ProcessHandle.current().pid() + " (SIGTERM)");
+    }
+
+    static final class Every extends Decimal {
+        Every() {
+            super(0, 1e7, "0-10000000 seconds; 0 for never");
+        }
+    }
+
+    static final class DownAfter extends Decimal {
+        DownAfter() {
+            super(1, 3600, "1-3600 seconds");
+        }
+    }
+
+    static final class Reservation extends Decimal {
+        Reservation() {
+            super(0, 1e7, "0-10000000 seconds; 0 frees a dropped agent's name at once");
+        }
     }
 
     /** A port to listen on, 0 for any free one. */

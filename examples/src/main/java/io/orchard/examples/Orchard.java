@@ -88,7 +88,7 @@ public final class Orchard implements Callable<Integer> {
         return List.of(
                 new CommandLine(new DemoCommand(out, err)),
                 ServerMain.command(console, out, err),
-                NodeMain.command(out, err),
+                NodeMain.command(console, out, err),
                 ViewerMain.command(out, err),
                 AgentMain.agentCommand(console, out, err),
                 AgentMain.agentsCommand(console, out, err),

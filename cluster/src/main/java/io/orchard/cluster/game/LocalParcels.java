@@ -15,17 +15,33 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 
 /** Every parcel of a split game as an object of this JVM, called one after the other. */
 public final class LocalParcels implements Parcels {
 
     private final Map<ParcelId, Parcel> parcels = new TreeMap<>();
+    private final ParcelGrid grid;
+    private final World world;
+    private final SimulationConfig config;
 
     /** A parcel for every square of {@code grid}, each with its own fruit of {@code world}. */
     public LocalParcels(ParcelGrid grid, World world, SimulationConfig config) {
+        this.grid = grid;
+        this.world = world;
+        this.config = config;
         for (ParcelId id : grid.all()) {
             parcels.put(id, new Parcel(id, grid, world.withOwnFruit(), config));
+        }
+    }
+
+    @Override
+    public void reset(Set<String> fruitLeft) {
+        for (ParcelId id : grid.all()) {
+            Parcel parcel = new Parcel(id, grid, world.withOwnFruit(), config);
+            parcel.keepOnly(fruitLeft);
+            parcels.put(id, parcel);
         }
     }
 
@@ -35,15 +51,28 @@ public final class LocalParcels implements Parcels {
     }
 
     @Override
-    public void release(Map<ParcelId, List<String>> names) {
-        names.forEach((id, released) -> parcels.get(id).release(released));
+    public List<AgentHandover> release(Map<ParcelId, List<String>> names) {
+        List<AgentHandover> released = new ArrayList<>();
+        names.forEach((id, gone) -> released.addAll(parcels.get(id).release(gone)));
+        return released;
+    }
+
+    @Override
+    public void addGhosts(Map<ParcelId, List<OwnedAgent>> ghosts) {
+        ghosts.forEach((id, added) -> parcels.get(id).addGhosts(added));
+    }
+
+    @Override
+    public void forgetGhosts(Map<ParcelId, List<String>> names) {
+        names.forEach((id, gone) -> parcels.get(id).forgetGhosts(gone));
     }
 
     @Override
     public List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
         List<KeyedLine> lines = new ArrayList<>();
-        parcels.forEach((id, parcel) -> {
-            parcel.ghosts(ghosts.getOrDefault(id, List.of()));
+        ghosts.forEach((id, held) -> {
+            Parcel parcel = parcels.get(id);
+            parcel.ghosts(held);
             lines.addAll(parcel.perceive(tick, time));
         });
         return lines;
@@ -62,13 +91,15 @@ public final class LocalParcels implements Parcels {
         List<KeyedLine> lines = new ArrayList<>();
         List<Parcel.KeyedClaim> claims = new ArrayList<>();
         List<AgentHandover> owned = new ArrayList<>();
+        List<String> removed = new ArrayList<>();
         acts.forEach((id, own) -> {
             Parcel parcel = parcels.get(id);
             lines.addAll(parcel.apply(tick, time, own, answers));
             claims.addAll(parcel.takeClaims());
             owned.addAll(parcel.owned());
+            removed.addAll(parcel.takeRemoved());
         });
-        return new Applied(lines, claims, owned);
+        return new Applied(lines, claims, owned, removed);
     }
 
     @Override
@@ -90,8 +121,9 @@ public final class LocalParcels implements Parcels {
         List<KeyedLine> lines = new ArrayList<>();
         List<AgentHandover> left = new ArrayList<>();
         List<AgentHandover> owned = new ArrayList<>();
-        parcels.forEach((id, parcel) -> {
-            parcel.ghosts(ghosts.getOrDefault(id, List.of()));
+        ghosts.forEach((id, held) -> {
+            Parcel parcel = parcels.get(id);
+            parcel.ghosts(held);
             lines.addAll(parcel.walk(tick, time, left));
             owned.addAll(parcel.owned());
         });

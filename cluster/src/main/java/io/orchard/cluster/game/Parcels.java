@@ -10,6 +10,7 @@ import io.orchard.server.sim.AgentHandover;
 import io.orchard.server.sim.FirstContact;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * Every parcel of a split game, as its tick reaches them: one call per step of the tick, which
@@ -20,14 +21,16 @@ import java.util.Map;
 public interface Parcels {
 
     /**
-     * What the parcels said while applying the tick's messages, the grasps they were asked for, and
-     * their own agents as the actions left them.
+     * What the parcels said while applying the tick's messages, the grasps they were asked for, their
+     * own agents as the actions left them, and the agents that unregistered.
      *
-     * @param lines  their lines
-     * @param claims the grasps, each with the place of its request
-     * @param owned  the own agents of the parcels that applied messages
+     * @param lines   their lines
+     * @param claims  the grasps, each with the place of its request
+     * @param owned   the own agents of the parcels that applied messages
+     * @param removed the agents that unregistered
      */
-    record Applied(List<KeyedLine> lines, List<Parcel.KeyedClaim> claims, List<AgentHandover> owned) {}
+    record Applied(List<KeyedLine> lines, List<Parcel.KeyedClaim> claims, List<AgentHandover> owned,
+                   List<String> removed) {}
 
     /**
      * What the parcels said while deciding the grasps, and the fruit taken.
@@ -47,16 +50,28 @@ public interface Parcels {
      */
     record Walked(List<KeyedLine> lines, List<AgentHandover> left, List<AgentHandover> owned) {}
 
+    /**
+     * Every parcel starts a game anew: no agents, and of the world as made only the fruit named
+     * (all of it for a new game; what a saved game had left for one that goes on from it).
+     */
+    void reset(Set<String> fruitLeft);
+
     /** Each named parcel takes these agents as its own. */
     void own(Map<ParcelId, List<OwnedAgent>> agents);
 
-    /** Each named parcel gives up these agents. */
-    void release(Map<ParcelId, List<String>> names);
+    /** Each named parcel gives up these agents; returns them as they were. */
+    List<AgentHandover> release(Map<ParcelId, List<String>> names);
+
+    /** Each named parcel holds these ghosts too (agents that came into the game in the middle of a tick). */
+    void addGhosts(Map<ParcelId, List<OwnedAgent>> ghosts);
+
+    /** Each named parcel forgets the ghosts of these agents, which left the game. */
+    void forgetGhosts(Map<ParcelId, List<String>> names);
 
     /**
-     * The perceptions due at {@code tick}: every parcel that has agents of its own takes its ghosts
-     * anew from {@code ghosts} (none when not named: only parcels with agents of their own need
-     * ghosts), then perceives; returns their lines.
+     * The perceptions due at {@code tick}: every parcel named in {@code ghosts} (every parcel that has
+     * agents of its own; the others need no ghosts) takes its ghosts anew, then perceives; returns
+     * their lines.
      */
     List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts);
 
@@ -73,8 +88,8 @@ public interface Parcels {
     void fruitTaken(Map<ParcelId, List<String>> fruit);
 
     /**
-     * Every parcel that has agents of its own takes its ghosts anew from {@code ghosts}, as the
-     * tick's actions left them, and walks its agents to simulated {@code time}.
+     * Every parcel named in {@code ghosts} (every parcel that has agents of its own) takes its ghosts
+     * anew, as the tick's actions left them, and walks its agents to simulated {@code time}.
      */
     Walked walk(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts);
 

@@ -1,38 +1,29 @@
 package io.orchard.cluster.game;
 
+import io.orchard.cluster.game.Applying.Event;
 import io.orchard.cluster.order.KeyedLine;
 import io.orchard.cluster.order.KeyedLines;
 import io.orchard.cluster.order.LineKey;
 import io.orchard.cluster.order.LineKey.Step;
 import io.orchard.cluster.order.Merge;
-import io.orchard.cluster.order.ProxySession;
-import io.orchard.cluster.order.SessionRef;
 import io.orchard.cluster.parcel.OwnedAgent;
 import io.orchard.cluster.parcel.Parcel;
 import io.orchard.cluster.parcel.ParcelGrid;
 import io.orchard.cluster.parcel.ParcelId;
-import io.orchard.cluster.parcel.PathQuery;
-import io.orchard.protocol.message.AgentMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
-import io.orchard.protocol.message.ErrorCode;
-import io.orchard.protocol.message.ErrorMessage;
-import io.orchard.protocol.message.GameOverMessage;
-import io.orchard.protocol.message.InstructionMessage;
-import io.orchard.protocol.message.KeepAliveMessage;
-import io.orchard.protocol.message.MoveMessage;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ScoreUpdateMessage;
-import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
+import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.PerceivedAgent;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.AgentHandover;
+import io.orchard.server.sim.Checkpoint;
 import io.orchard.server.sim.ClientSession;
-import io.orchard.server.sim.FirstContact;
 import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.Inbox;
 import io.orchard.server.sim.PartialSimulation;
@@ -41,13 +32,13 @@ import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.Placement;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Recorder.Audience;
-import io.orchard.server.sim.Scoreboard;
+import io.orchard.server.sim.Referee;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.world.Fruit;
 import io.orchard.server.world.World;
-import java.util.ArrayList;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -57,6 +48,7 @@ import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import java.util.function.Function;
 
 /**
@@ -68,18 +60,15 @@ import java.util.function.Function;
  *
  * <p>Before the game starts, a plain simulation (the lobby) takes the registrations and setups and
  * settles where agents stand, exactly as one server does; at the start its agents go to the parcels
- * their places lie in. From then on every tick runs in the steps of docs/scaling.md, and what the
- * parcels say is merged by key ({@link Merge}).
+ * their places lie in, and the rest of the game (agents coming and going, scores, pauses, turns,
+ * the end) to its {@link Referee}. From then on every tick runs in the steps of docs/scaling.md, and
+ * what the parcels and the referee say is merged by key ({@link Merge}).
  *
  * <p>In lockstep, its owner waits for the agents' turns ({@link #awaitTurns}) between the two halves
- * of a tick; a turn missed is not yet recorded as the single server records it. Not yet: agents
- * that join, leave or come back once the game runs, viewers that connect to a game under way, and
- * pausing.
+ * of a tick; while the game waits, is paused or is over, it applies what comes as it comes
+ * ({@link #applyNow()}).
  */
 public final class SplitGame implements Inbox {
-
-    /** What a client did, queued for the game's thread. */
-    private record Event(ClientSession session, ClientMessage message, boolean connected, boolean gone) {}
 
     private final World world;
     private final SimulationConfig config;
@@ -91,23 +80,27 @@ public final class SplitGame implements Inbox {
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
     /** Events taken from the inbox while waiting for turns, applied at the end of the tick. */
     private final List<Event> pending = new ArrayList<>();
-    private Parcels parcels;
-    /** Every agent's controller, by the agent's name: the order in which clients' messages apply. */
-    private final Map<String, SessionRef> owners = new TreeMap<>();
-    /** Every agent as the parcels last said it was. */
-    private final Map<String, AgentHandover> states = new TreeMap<>();
-    private final Map<String, ParcelId> where = new HashMap<>();
-    private final Map<Long, String> labels = new HashMap<>();
+    /** Every client connected, by number, as the lobby and the referee know it. */
+    private final Map<Long, Link> links = new HashMap<>();
+    private final Roll roll = new Roll();
     private final Map<String, ParcelId> fruitParcels = new HashMap<>();
     private final Map<String, Vec3> fruitPlaces = new HashMap<>();
-    private final Scoreboard scores = new Scoreboard();
+    /** The referee's lines, and what the game itself says. */
     private final KeyedLines own = new KeyedLines();
     private final Counters counts = new Counters();
-    private boolean split;
-    private Phase phase = Phase.WAITING;
+    /** Null until the game starts. */
+    private Referee referee;
+    private Parcels parcels;
+    private Applying applying;
     private long tick;
     private double time;
-    private int fruitLeft;
+    /** How many events came while no tick passed: their keys. */
+    private long idle;
+    /** Who gets a checkpoint at the start, after every tick in which fruit was taken, and at the end. */
+    private Consumer<Checkpoint> onScore;
+    /** Who gets a checkpoint at the end of the tick under way (at once while no tick passes). */
+    private final List<Consumer<Checkpoint>> atTickEnd = new ArrayList<>();
+    private boolean overSaved;
 
     /**
      * A game of {@code world}, made from {@code seed}, cut into parcels of {@code parcelSize} units
@@ -143,21 +136,44 @@ public final class SplitGame implements Inbox {
                 PartialSimulation.touchingReach(config)));
     }
 
+    /**
+     * Continues a saved game: its clock, scores and phase; its agents wait, out of the world, until
+     * their controllers register them again with their tokens, as on a server resumed from the
+     * checkpoint. Call before the game's thread starts, on a game made from the checkpoint's world
+     * and settings.
+     */
+    public void restore(Checkpoint checkpoint) {
+        lobby.restore(checkpoint);
+    }
+
+    /**
+     * How long the name and score of an agent whose connection dropped stay its controller's, as
+     * {@link Simulation#reserveDroppedNames}. Call before the game's thread starts.
+     */
+    public void reserveDroppedNames(Duration time) {
+        lobby.reserveDroppedNames(time);
+    }
+
     // ---- Inbox: any thread -------------------------------------------------------------------
 
     @Override
     public void connected(ClientSession session) {
-        inbox.add(new Event(session, null, true, false));
+        inbox.add(new Event(Event.Kind.CONNECTED, session, null, null, null));
     }
 
     @Override
     public void received(ClientSession session, ClientMessage message) {
-        inbox.add(new Event(session, message, false, false));
+        inbox.add(new Event(Event.Kind.RECEIVED, session, message, null, null));
     }
 
     @Override
     public void disconnected(ClientSession session, String reason) {
-        inbox.add(new Event(session, null, false, true));
+        inbox.add(new Event(Event.Kind.GONE, session, null, reason, null));
+    }
+
+    /** Runs {@code task} on the game's thread, before the clients' events of the same tick. */
+    public void execute(Runnable task) {
+        inbox.add(new Event(Event.Kind.TASK, null, null, null, task));
     }
 
     @Override
@@ -167,76 +183,132 @@ public final class SplitGame implements Inbox {
 
     // ---- the game's thread ---------------------------------------------------------------------
 
+    /**
+     * Waits up to {@code millis} for something to come while no ticks pass, then applies it and
+     * whatever came with it ({@link #applyNow()}).
+     */
+    public void applyNext(long millis) throws InterruptedException {
+        Event first = inbox.poll(millis, TimeUnit.MILLISECONDS);
+        if (first != null) {
+            pending.add(first);
+        }
+        applyNow();
+    }
+
     /** Applies what clients sent while no ticks pass; the lobby's until the game starts. */
     public void applyNow() {
-        List<Event> events = new ArrayList<>();
+        List<Event> events = new ArrayList<>(pending);
+        pending.clear();
         inbox.drainTo(events);
-        if (split) {
-            events.forEach(this::outOfTick);
+        if (referee != null) {
+            if (!events.isEmpty()) {
+                Map<LineKey, Event> ordered = new TreeMap<>();
+                events.forEach(event -> ordered.put(new LineKey(tick, Step.IDLE, "", idle++, 0, 0), event));
+                finish(applying.apply(tick, time, ordered).lines());
+                saved(false);
+            }
             return;
         }
-        for (Event event : events) {
-            if (event.connected()) {
-                merge.join(event.session());
-                lobby.connected(event.session());
-            } else if (event.gone()) {
-                merge.leave(event.session());
-                lobby.disconnected(event.session(), "connection closed");
-            } else {
-                lobby.received(event.session(), event.message());
-            }
-        }
+        events.forEach(this::toLobby);
         lobby.applyNow();
-        if (lobby.phase() == Phase.RUNNING) {
+        if (lobby.phase() != Phase.WAITING) {
             split();
+        }
+        saved(false);
+    }
+
+    private void toLobby(Event event) {
+        ClientSession session = event.session();
+        switch (event.kind()) {
+            case TASK -> event.task().run();
+            case CONNECTED -> {
+                Link link = new Link(session);
+                links.put(session.id(), link);
+                merge.connected(session);
+                merge.join(session);
+                lobby.connected(link);
+            }
+            case GONE -> {
+                Link link = links.remove(session.id());
+                merge.leave(session);
+                if (link != null) {
+                    lobby.disconnected(link, event.reason());
+                }
+            }
+            case RECEIVED -> {
+                Link link = links.get(session.id());
+                if (link != null) {
+                    lobby.received(link, event.message());
+                }
+            }
         }
     }
 
-    /** The game started in the lobby: its agents go to their parcels. */
+    /** Whether a lockstep game has its agents and starts once their setup turns are over. */
+    public boolean startDue() {
+        return referee == null && lobby.startDue();
+    }
+
+    /** The start is due but some setup turns were not ended in time: they are missed, and the game starts. */
+    public void startWithoutSetup() {
+        if (referee == null) {
+            lobby.startWithoutSetup();
+            if (lobby.phase() != Phase.WAITING) {
+                split();
+            }
+        }
+    }
+
+    /** The game started in the lobby: its agents go to their parcels, the rest to the referee. */
     private void split() {
-        split = true;
-        phase = Phase.RUNNING;
-        tick = lobby.tick();
-        time = lobby.time();
-        lobby.ranking().forEach(scores::restore);
+        Set<String> fruitLeft = new HashSet<>();
+        world.fruit().forEach(fruit -> fruitLeft.add(fruit.id()));
+        parcels = parcelsOf.apply(grid);
+        parcels.reset(fruitLeft); // first: should a parcel not answer, nothing has changed, and the start comes again
+        referee = lobby.referee(own);
+        links.values().forEach(link -> link.keyedInto(own));
+        tick = referee.tick();
+        time = referee.time();
         for (Fruit fruit : world.fruit()) {
             fruitParcels.put(fruit.id(), grid.of(fruit.position()));
             fruitPlaces.put(fruit.id(), fruit.position());
         }
-        fruitLeft = world.fruitCount();
-        parcels = parcelsOf.apply(grid);
+        applying = new Applying(this, referee, roll, parcels, grid, config, own, merge, links, counts);
         Map<ParcelId, List<OwnedAgent>> homes = new TreeMap<>();
-        for (Driven driven : lobby.handOver()) {
-            String name = driven.agent().name();
-            owners.put(name, SessionRef.of(driven.owner()));
-            labels.put(driven.owner().id(), driven.label());
+        for (Driven driven : referee.agents()) {
             // Parcels simulate agents; their models are for viewers, and may be megabytes each.
             AgentHandover agent = driven.agent().withoutModel();
-            states.put(name, agent);
             ParcelId home = grid.of(agent.position());
-            where.put(name, home);
+            roll.add(agent, (Link) driven.owner(), home);
             homes.computeIfAbsent(home, id -> new ArrayList<>()).add(owned(agent));
         }
         parcels.own(homes);
+        if (referee.phase() == Phase.OVER) {
+            merge.stopRecording(); // it ended before it started
+        } else if (onScore != null) {
+            onScore.accept(checkpoint()); // the saved game is this one's from its start
+        }
     }
 
-    private OwnedAgent owned(AgentHandover agent) {
-        SessionRef owner = owners.get(agent.name());
-        return new OwnedAgent(agent, owner, labels.get(owner.id()));
+    /** An agent of the game with the client that drives it, as parcels hold it. */
+    OwnedAgent owned(AgentHandover agent) {
+        Link owner = roll.owner(agent.name());
+        return new OwnedAgent(agent, owner.ref(), referee.label(owner));
     }
 
     /**
-     * In lockstep: waits until the client of every agent has ended its turn of the running tick, or
-     * {@code deadline} of wall-clock time has passed; what they send meanwhile counts in this tick.
+     * In lockstep: waits until the client of every agent has ended its turn of the running tick (but
+     * the late ones, as one server does), or {@code deadline} of wall-clock time has passed; what they
+     * send meanwhile counts in this tick. A game with no agent's client to wait for waits the deadline.
      *
-     * @return whether every turn was ended in time
+     * @return whether every turn waited for was ended in time
      */
     public boolean awaitTurns(Duration deadline) throws InterruptedException {
-        Set<Long> waiting = new HashSet<>();
-        owners.values().forEach(owner -> waiting.add(owner.id()));
+        Set<Long> waiting = new HashSet<>(referee.turnsToWaitFor());
+        boolean anyone = !waiting.isEmpty();
         pending.forEach(event -> ended(event, waiting));
         long end = System.nanoTime() + deadline.toNanos();
-        while (!waiting.isEmpty()) {
+        while (!anyone || !waiting.isEmpty()) {
             long left = end - System.nanoTime();
             if (left <= 0) {
                 return false;
@@ -252,18 +324,26 @@ public final class SplitGame implements Inbox {
 
     /** Takes the event's client off {@code waiting} when it ended its turn of this tick or left. */
     private void ended(Event event, Set<Long> waiting) {
-        if (event.gone() || event.message() instanceof EndTurnMessage end && end.tick() >= tick) {
+        if (event.kind() == Event.Kind.GONE || endsTurn(event)) {
             waiting.remove(event.session().id());
         }
     }
 
+    private boolean endsTurn(Event event) {
+        return event.message() instanceof EndTurnMessage end && end.tick() >= tick;
+    }
+
     /** The first half of a tick: the clock and the perceptions asked for. */
     public void beginTick() {
-        if (phase != Phase.RUNNING) {
+        if (referee == null || referee.phase() != Phase.RUNNING) {
             return;
         }
+        referee.at(tick, time);
+        if (lockstep()) {
+            referee.tickBegins();
+        }
         own.cause(LineKey.of(tick, Step.TICK));
-        own.sent(tick, time, Audience.ALL, null, new TickMessage(tick, time));
+        referee.broadcast(new TickMessage(tick, time), Audience.ALL);
         List<KeyedLine> lines = new ArrayList<>(own.take());
         List<KeyedLine> perceived = parcels.perceive(tick, time, ghosts());
         countSightings(perceived);
@@ -272,175 +352,96 @@ public final class SplitGame implements Inbox {
         merge.flush();
     }
 
-    /** The second half of a tick: apply what clients sent, grasp, walk, hand over, check the end. */
+    /**
+     * The second half of a tick: apply what clients sent, record the turns missed, grasp, walk, hand
+     * over, check the end. A pause that came during the tick takes effect once it is over.
+     */
     public void endTick() {
-        if (phase != Phase.RUNNING) {
+        if (referee == null || referee.phase() != Phase.RUNNING) {
             applyNow();
             return;
         }
         List<Event> events = new ArrayList<>(pending);
         pending.clear();
         inbox.drainTo(events);
-        Map<ParcelId, List<Parcel.Act>> acts = new TreeMap<>();
-        for (Map.Entry<LineKey, Event> applied : inClientOrder(events).entrySet()) {
-            apply(applied.getKey(), applied.getValue(), acts);
+        Set<Long> endedTurns = new HashSet<>();
+        events.stream().filter(this::endsTurn).forEach(event -> endedTurns.add(event.session().id()));
+        referee.at(tick, time);
+        Applying.Done applied = applying.apply(tick, time, inClientOrder(events));
+        List<KeyedLine> lines = new ArrayList<>(applied.lines());
+        Phase phase = referee.phase();
+        if (phase == Phase.RUNNING || phase == Phase.PAUSED) {
+            if (lockstep()) {
+                own.byMissedTurn(tick);
+                referee.turnsEnded(tick, endedTurns);
+            }
+            double next = (tick + 1) * config.tickSeconds();
+            boolean collected = grasp(applied.claims(), lines);
+            walk(next, lines);
+            handOver();
+            referee.at(tick, next);
+            if (collected) {
+                own.cause(LineKey.of(tick, Step.SCORE));
+                referee.broadcast(new ScoreUpdateMessage(tick, referee.ranking()), Audience.ALL);
+            }
+            long ended = tick;
+            tick = ended + 1;
+            time = next;
+            referee.at(tick, time);
+            own.cause(LineKey.of(ended, Step.END));
+            referee.checkOver();
+            lines.addAll(own.take());
+            listeners.forEach(l -> l.tickEnded(ended, next));
+            finish(lines);
+            saved(collected);
+            return;
         }
-        List<KeyedLine> lines = new ArrayList<>(own.take());
-        Parcels.Applied applied = parcels.apply(tick, time, acts, pathsBeyondHalos(acts));
-        lines.addAll(applied.lines());
-        applied.owned().forEach(agent -> states.put(agent.name(), agent)); // facing and walking as the actions left them
-        boolean collected = grasp(applied.claims(), lines);
-        double next = (tick + 1) * config.tickSeconds();
-        walk(next, lines);
-        handOver();
-        if (collected) {
-            own.cause(LineKey.of(tick, Step.SCORE));
-            own.sent(tick, next, Audience.ALL, null, new ScoreUpdateMessage(tick, scores.ranking()));
-        }
-        lines.addAll(own.take());
+        finish(lines);
+        saved(false);
+    }
+
+    /** Writes what was said, in order; after the game's end nothing more is recorded. */
+    private void finish(List<KeyedLine> lines) {
         merge.write(lines);
-        long ended = tick;
-        tick = ended + 1;
-        time = next;
-        String over = fruitLeft == 0 ? "all fruit collected"
-                : time >= config.timeLimit() - 1e-9 ? "time limit reached" : null;
-        if (over != null) {
-            end(ended, over);
+        if (referee.phase() == Phase.OVER) {
+            merge.stopRecording();
         }
-        listeners.forEach(l -> l.tickEnded(ended, next));
         merge.flush();
     }
 
-    /** Each message of the tick with its place: client by client in the order of their agents' names. */
+    /** Each event of the tick with its place: client by client in the order of their agents' names. */
     private Map<LineKey, Event> inClientOrder(List<Event> events) {
-        Map<Long, String> rank = new HashMap<>();
-        owners.forEach((name, session) -> rank.putIfAbsent(session.id(), name));
+        Map<Long, String> rank = roll.ranks();
         Map<Long, Integer> counted = new HashMap<>();
         Map<LineKey, Event> ordered = new TreeMap<>();
         for (Event event : events) {
-            long session = event.session().id();
-            int index = counted.merge(session, 1, Integer::sum) - 1;
-            String name = rank.get(session);
+            long client = event.client();
+            int index = counted.merge(client, 1, Integer::sum) - 1;
+            String name = rank.get(client);
             ordered.put(name != null ? new LineKey(tick, Step.APPLY, name, 0, index, 0)
-                    : new LineKey(tick, Step.APPLY, "", session, index, 0), event);
+                    : new LineKey(tick, Step.APPLY, "", client, index, 0), event);
         }
         return ordered;
-    }
-
-    /** Takes one event of the tick: a message about an own agent goes to its parcel, the rest is answered here. */
-    private void apply(LineKey key, Event event, Map<ParcelId, List<Parcel.Act>> acts) {
-        ClientSession session = event.session();
-        if (event.connected() || event.gone()) {
-            outOfTick(event);
-            return;
-        }
-        ClientMessage message = event.message();
-        if (message instanceof KeepAliveMessage) {
-            return; // it says only that the client is there
-        }
-        own.cause(key);
-        if (message instanceof EndTurnMessage) {
-            own.accepted(tick, time, label(session), message);
-        } else if (message instanceof AgentMessage about) {
-            SessionRef owner = owners.get(about.agent());
-            if (session.role() != Role.AGENT) {
-                refuse(session, message, ErrorCode.WRONG_ROLE, "a viewer cannot drive agents");
-            } else if (owner == null) {
-                refuse(session, message, ErrorCode.UNKNOWN_AGENT, "no agent named '" + about.agent() + "' in the world");
-            } else if (owner.id() != session.id()) {
-                refuse(session, message, ErrorCode.NOT_YOUR_AGENT, "agent '" + about.agent()
-                        + "' belongs to another connection");
-            } else {
-                acts.computeIfAbsent(where.get(about.agent()), id -> new ArrayList<>())
-                        .add(new Parcel.Act(key, SessionRef.of(session), message));
-            }
-        } else if (message instanceof InstructionMessage instruction) {
-            own.accepted(tick, time, label(session), message);
-            SessionRef owner = owners.get(instruction.agent());
-            if (owner == null) {
-                say(SessionRef.of(session), new ErrorMessage(message.seq(), ErrorCode.UNKNOWN_AGENT, "no agent named '"
-                        + instruction.agent() + "' in the world"));
-            } else {
-                say(owner, instruction);
-            }
-        } else {
-            refuse(session, message, ErrorCode.INVALID_VALUE, "this game's world is cut into parcels, which take "
-                    + "registrations and game controls only before the game starts");
-        }
-    }
-
-    private void refuse(ClientSession session, ClientMessage message, ErrorCode code, String why) {
-        own.accepted(tick, time, label(session), message);
-        say(SessionRef.of(session), new ErrorMessage(message.seq(), code, why));
-    }
-
-    /** Sends a message to one client, in its place among the coordinator's lines. */
-    private void say(SessionRef to, ServerMessage message) {
-        own.sent(tick, time, Audience.CLIENT, labels.getOrDefault(to.id(), "agent"), message);
-        new ProxySession(to, own).send(message);
-    }
-
-    /**
-     * The first contacts on the paths of this tick's moves that leave their parcel's halo, from the
-     * parcels along them; every agent stands where it stood at the start of the tick until it walks.
-     */
-    private Map<PathQuery, FirstContact> pathsBeyondHalos(Map<ParcelId, List<Parcel.Act>> acts) {
-        Map<ParcelId, List<PathQuery>> asks = new TreeMap<>();
-        List<PathQuery> beyond = new ArrayList<>();
-        double maxRadius = config.bodyLimits().maxRadius();
-        acts.forEach((home, own) -> {
-            for (Parcel.Act act : own) {
-                if (act.message() instanceof MoveMessage move) {
-                    AgentHandover walker = states.get(move.agent());
-                    PathQuery path = new PathQuery(walker.name(), walker.position(),
-                            Vec3.ground(move.to().x(), move.to().z()), walker.body().radius());
-                    if (Parcel.leavesHalo(grid, home, path, maxRadius)) {
-                        counts.pathsBeyondHalo++;
-                        beyond.add(path);
-                        for (ParcelId id : grid.along(path, maxRadius)) {
-                            if (!id.equals(home)) {
-                                asks.computeIfAbsent(id, i -> new ArrayList<>()).add(path);
-                            }
-                        }
-                    }
-                }
-            }
-        });
-        Map<PathQuery, FirstContact> first = new HashMap<>(asks.isEmpty() ? Map.of() : parcels.firstAlong(asks));
-        beyond.forEach(path -> first.putIfAbsent(path, null)); // none asked: the path meets no other parcel
-        return first;
-    }
-
-    /** What comes while no tick passes, or what the parcels do not take yet: a client that comes or goes. */
-    private void outOfTick(Event event) {
-        if (event.connected()) {
-            merge.join(event.session());
-        } else if (event.gone()) {
-            merge.leave(event.session());
-        }
-    }
-
-    private String label(ClientSession session) {
-        return session.role() == Role.VIEWER ? "viewer" : labels.getOrDefault(session.id(), "agent");
     }
 
     /** Every grasp of the tick to the parcel of its fruit, in order; true when a fruit was taken. */
     private boolean grasp(List<Parcel.KeyedClaim> claims, List<KeyedLine> lines) {
         List<Parcel.KeyedClaim> ordered = new ArrayList<>(claims);
+        ordered.removeIf(claim -> !roll.has(claim.claim().agent().name())); // it left during the tick
         ordered.sort((a, b) -> a.key().compareTo(b.key()));
         Map<String, LineKey> firstClaims = new HashMap<>();
         Map<ParcelId, List<Parcel.ClaimOf>> deciding = new TreeMap<>();
         for (Parcel.KeyedClaim keyed : ordered) {
             String fruit = keyed.claim().message().fruit();
             String agent = keyed.claim().agent().name();
-            ParcelId at = fruitParcels.getOrDefault(fruit, where.get(agent));
-            if (!at.equals(where.get(agent))) {
+            ParcelId at = fruitParcels.getOrDefault(fruit, roll.parcel(agent));
+            if (!at.equals(roll.parcel(agent))) {
                 counts.graspsAcrossBorders++;
             }
             firstClaims.putIfAbsent(fruit, keyed.key().in(Step.GRASP));
-            SessionRef owner = owners.get(agent);
+            Link owner = roll.owner(agent);
             deciding.computeIfAbsent(at, id -> new ArrayList<>())
-                    .add(new Parcel.ClaimOf(keyed.claim(), owner, labels.get(owner.id())));
+                    .add(new Parcel.ClaimOf(keyed.claim(), owner.ref(), referee.label(owner)));
         }
         if (deciding.isEmpty()) {
             return false;
@@ -451,9 +452,7 @@ public final class SplitGame implements Inbox {
         List<Parcel.Taken> taken = new ArrayList<>(grasped.taken());
         taken.sort((a, b) -> firstClaims.get(a.fruit()).compareTo(firstClaims.get(b.fruit())));
         for (Parcel.Taken fruit : taken) {
-            scores.collect(fruit.agent(), fruit.kind());
-            fruitLeft--;
-            listeners.forEach(l -> l.fruitEaten(fruit.agent(), fruit.fruit(), fruit.kind(), fruit.time()));
+            referee.collected(fruit.agent(), fruit.fruit(), fruit.kind(), fruit.time());
             Vec3 place = fruitPlaces.get(fruit.fruit());
             for (ParcelId id : grid.seeing(place.x(), place.z())) {
                 seen.computeIfAbsent(id, i -> new ArrayList<>()).add(fruit.fruit());
@@ -467,15 +466,16 @@ public final class SplitGame implements Inbox {
     private void walk(double next, List<KeyedLine> lines) {
         Parcels.Walked walked = parcels.walk(tick, next, ghosts());
         lines.addAll(walked.lines());
-        walked.owned().forEach(agent -> states.put(agent.name(), agent));
+        walked.owned().forEach(roll::update);
         if (!walked.left().isEmpty()) {
             counts.walkedTogether += walked.left().size();
             own.byAgent(tick, Step.WALK);
             Map<ParcelId, List<AgentHandover>> back = new TreeMap<>();
             for (AgentHandover agent : PartialSimulation.walkTogether(walked.left(), config, tick, next, own)) {
-                back.computeIfAbsent(where.get(agent.name()), id -> new ArrayList<>()).add(agent);
-                states.put(agent.name(), agent);
+                back.computeIfAbsent(roll.parcel(agent.name()), id -> new ArrayList<>()).add(agent);
+                roll.update(agent);
             }
+            lines.addAll(own.take());
             parcels.walked(back);
         }
     }
@@ -484,50 +484,42 @@ public final class SplitGame implements Inbox {
     private void handOver() {
         Map<ParcelId, List<String>> leaving = new TreeMap<>();
         Map<ParcelId, List<OwnedAgent>> arriving = new TreeMap<>();
-        for (AgentHandover agent : states.values()) {
-            ParcelId from = where.get(agent.name());
+        for (AgentHandover agent : roll.states()) {
+            ParcelId from = roll.parcel(agent.name());
             ParcelId into = grid.of(agent.position());
             if (!into.equals(from)) {
                 leaving.computeIfAbsent(from, id -> new ArrayList<>()).add(agent.name());
                 arriving.computeIfAbsent(into, id -> new ArrayList<>()).add(owned(agent));
-                where.put(agent.name(), into);
                 counts.handOvers++;
             }
         }
         if (!leaving.isEmpty()) {
             parcels.release(leaving);
+            arriving.values().forEach(list -> list.forEach(agent -> roll.moveTo(agent.agent().name(),
+                    grid.of(agent.agent().position()))));
             parcels.own(arriving);
         }
     }
 
     /**
-     * The ghosts of every parcel that has agents of its own: the agents of other parcels within its
-     * halo, as they are now. Parcels without agents of their own need none.
+     * The ghosts of every parcel that has agents of its own (an entry, perhaps empty, for each): the
+     * agents of other parcels within its halo, as they are now. Parcels without agents of their own
+     * need none.
      */
-    private Map<ParcelId, List<OwnedAgent>> ghosts() {
-        Set<ParcelId> holding = new HashSet<>(where.values());
+    Map<ParcelId, List<OwnedAgent>> ghosts() {
+        Set<ParcelId> holding = roll.parcels();
         Map<ParcelId, List<OwnedAgent>> ghosts = new TreeMap<>();
-        for (AgentHandover agent : states.values()) {
-            ParcelId home = where.get(agent.name());
+        holding.forEach(id -> ghosts.put(id, new ArrayList<>()));
+        for (AgentHandover agent : roll.states()) {
+            ParcelId home = roll.parcel(agent.name());
             OwnedAgent ghost = owned(agent);
             for (ParcelId id : grid.seeing(agent.position().x(), agent.position().z())) {
                 if (!id.equals(home) && holding.contains(id)) {
-                    ghosts.computeIfAbsent(id, i -> new ArrayList<>()).add(ghost);
+                    ghosts.get(id).add(ghost);
                 }
             }
         }
         return ghosts;
-    }
-
-    private void end(long ended, String reason) {
-        phase = Phase.OVER;
-        List<Score> ranking = scores.ranking();
-        own.cause(LineKey.of(ended, Step.END));
-        own.sent(tick, time, Audience.ALL, null, new GameOverMessage(tick, reason, ranking));
-        merge.write(own.take());
-        merge.flush();
-        merge.stopRecording();
-        listeners.forEach(l -> l.gameOver(reason, ranking));
     }
 
     /** Counts perceptions of an agent standing in another parcel than the perceiver's. */
@@ -535,12 +527,82 @@ public final class SplitGame implements Inbox {
         for (KeyedLine line : said) {
             if (line.message() instanceof PerceptionMessage perception) {
                 for (PerceivedAgent seen : perception.agents()) {
-                    if (!where.get(seen.name()).equals(where.get(perception.agent()))) {
+                    ParcelId there = roll.parcel(seen.name());
+                    if (there != null && !there.equals(roll.parcel(perception.agent()))) {
                         counts.sightingsAcrossBorders++;
                     }
                 }
             }
         }
+    }
+
+    private boolean lockstep() {
+        return config.clock() == ClockMode.LOCKSTEP;
+    }
+
+    // ---- commands: on the game's thread ({@link #execute}) --------------------------------------
+
+    /** Starts the game now; no effect once started. */
+    public void start() {
+        if (referee == null) {
+            lobby.start();
+        }
+    }
+
+    /** Pauses a running game or continues a paused one; returns the phase after. */
+    public Phase togglePause() {
+        return referee == null ? lobby.togglePause() : referee.togglePause();
+    }
+
+    /** Ends the game now with this reason; no effect once over. */
+    public void end(String reason) {
+        if (referee == null) {
+            lobby.end(reason);
+        } else {
+            referee.end(reason);
+        }
+    }
+
+    /**
+     * Gives {@code to} a checkpoint when the game starts, after every tick in which fruit was
+     * collected and when the game ends, so that nothing collected is lost to a crash. Call before the
+     * game's thread starts.
+     */
+    public void checkpointWhenScored(Consumer<Checkpoint> to) {
+        onScore = to;
+    }
+
+    /**
+     * Takes a checkpoint at the end of the tick under way (at once while no ticks pass) and gives it
+     * to {@code to} on the game's thread. Safe from any thread.
+     */
+    public void checkpointAtTickEnd(Consumer<Checkpoint> to) {
+        execute(() -> atTickEnd.add(to));
+    }
+
+    /** Hands out the checkpoints due now: those asked for, and one for a score or the end. */
+    private void saved(boolean scored) {
+        boolean over = phase() == Phase.OVER;
+        boolean forScore = onScore != null && (scored || over && !overSaved);
+        if (!forScore && atTickEnd.isEmpty()) {
+            return;
+        }
+        Checkpoint checkpoint = checkpoint();
+        if (forScore) {
+            onScore.accept(checkpoint);
+            overSaved = over;
+        }
+        atTickEnd.forEach(to -> to.accept(checkpoint));
+        atTickEnd.clear();
+    }
+
+    /** The whole game as it is now. */
+    public Checkpoint checkpoint() {
+        if (referee == null) {
+            return lobby.checkpoint();
+        }
+        referee.refresh(roll.states());
+        return referee.checkpoint();
     }
 
     // ---- state ---------------------------------------------------------------------------------
@@ -552,17 +614,42 @@ public final class SplitGame implements Inbox {
 
     /** The current phase. */
     public Phase phase() {
-        return split ? phase : lobby.phase();
+        return referee != null ? referee.phase() : lobby.phase();
+    }
+
+    /** Whether the game went to its parcels: what they hold is part of the game from then on. */
+    public boolean inParcels() {
+        return referee != null;
     }
 
     /** The tick that runs now. */
     public long tick() {
-        return split ? tick : lobby.tick();
+        return referee != null ? tick : lobby.tick();
+    }
+
+    /** Simulated seconds since the start. */
+    public double time() {
+        return referee != null ? time : lobby.time();
     }
 
     /** Every agent's score, best first. */
     public List<Score> ranking() {
-        return split ? scores.ranking() : lobby.ranking();
+        return referee != null ? referee.ranking() : lobby.ranking();
+    }
+
+    /** Names of the agents in the game, by name. */
+    public List<String> agentNames() {
+        return referee != null ? referee.agents().stream().map(d -> d.agent().name()).toList() : lobby.agentNames();
+    }
+
+    /** Names of the agents of a restored game still waiting for their controllers. */
+    public List<String> waitingAgents() {
+        return referee != null ? referee.waitingAgents() : lobby.waitingAgents();
+    }
+
+    /** Fruit still in the world. */
+    public int fruitLeft() {
+        return world.fruitCount();
     }
 
     /** How much crossed parcels' borders so far. */
@@ -572,6 +659,8 @@ public final class SplitGame implements Inbox {
 
     /** Where each agent is now, by name: the parcel that owns it. */
     public Map<String, ParcelId> parcelsOfAgents() {
-        return new TreeMap<>(where);
+        Map<String, ParcelId> where = new TreeMap<>();
+        roll.states().forEach(agent -> where.put(agent.name(), roll.parcel(agent.name())));
+        return where;
     }
 }

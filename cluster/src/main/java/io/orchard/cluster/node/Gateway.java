@@ -11,11 +11,13 @@ import io.orchard.server.Version;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.Inbox;
 import io.orchard.server.sim.SimulationConfig;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.apache.pekko.actor.typed.ActorRef;
 import org.apache.pekko.actor.typed.Behavior;
 import org.apache.pekko.actor.typed.javadsl.Behaviors;
+import org.apache.pekko.actor.typed.receptionist.ServiceKey;
 
 /**
  * A node's door for agents and viewers: the server's own network front end
@@ -27,28 +29,36 @@ import org.apache.pekko.actor.typed.javadsl.Behaviors;
  */
 public final class Gateway implements Inbox {
 
+    /** The key under which every node's gateway actor is found (Pekko's receptionist). */
+    public static final ServiceKey<GatewayCommand> KEY = ServiceKey.create(GatewayCommand.class, "orchard-gateways");
+
     private static final MessageCodec CODEC = new MessageCodec();
 
     private final long node;
-    private final ActorRef<TickCommand> tick;
+    private volatile ActorRef<TickCommand> tick;
     private final Bounds bounds;
     private final SimulationConfig config;
     private final Map<Long, ClientSession> sessions = new ConcurrentHashMap<>();
     private volatile String self;
     private volatile long clockTick;
     private volatile GamePhase phase = GamePhase.WAITING;
+    /** The epoch of the tick last heard; -1 before any. */
+    private volatile long epoch = -1;
 
-    /** The gateway of node number {@code node}, telling {@code tick} what its clients do. */
-    public Gateway(int node, ActorRef<TickCommand> tick, Bounds bounds, SimulationConfig config) {
+    /**
+     * The gateway of node number {@code node} (a number no other node of the cluster has), for a
+     * world of {@code bounds} and a game of {@code config}.
+     */
+    public Gateway(int node, Bounds bounds, SimulationConfig config) {
         this.node = (long) node << 32;
-        this.tick = tick;
         this.bounds = bounds;
         this.config = config;
     }
 
-    /** Its actor, as the tick addresses it: set once the actor is made. */
-    public void attach(String actor) {
+    /** Its actor, as the tick addresses it, and the tick it tells what its clients do: set before clients come. */
+    public void attach(String actor, ActorRef<TickCommand> tick) {
         this.self = actor;
+        this.tick = tick;
     }
 
     /** The actor that writes the tick's lines to this gateway's clients: all writes happen on it. */
@@ -70,11 +80,32 @@ public final class Gateway implements Inbox {
                     return Behaviors.same();
                 })
                 .onMessage(GatewayCommand.Clock.class, clock -> {
-                    gateway.clockTick = clock.tick();
-                    gateway.phase = GamePhase.valueOf(clock.phase());
+                    if (clock.epoch() >= gateway.epoch) {
+                        gateway.epoch = clock.epoch();
+                        gateway.clockTick = clock.tick();
+                        gateway.phase = GamePhase.valueOf(clock.phase());
+                    }
+                    return Behaviors.same();
+                })
+                .onMessage(GatewayCommand.Rollback.class, rollback -> {
+                    gateway.epoch = Math.max(gateway.epoch, rollback.epoch());
+                    ErrorMessage last = (ErrorMessage) CODEC.decodeServer(rollback.line());
+                    for (ClientSession session : List.copyOf(gateway.sessions.values())) {
+                        session.close(last);
+                    }
                     return Behaviors.same();
                 })
                 .build();
+    }
+
+    /** The epoch of the tick last heard, -1 before any: whether a tick ran before on this cluster. */
+    public long epoch() {
+        return epoch;
+    }
+
+    /** Whether the tick last heard had a game under way (started, and not over). */
+    public boolean heardAGameUnderWay() {
+        return epoch >= 0 && (phase == GamePhase.RUNNING || phase == GamePhase.PAUSED);
     }
 
     /** The tick the game is at, as the tick last said. */
@@ -110,7 +141,7 @@ public final class Gateway implements Inbox {
     @Override
     public void disconnected(ClientSession session, String reason) {
         sessions.remove(number(session));
-        tick.tell(new TickCommand.Disconnected(number(session)));
+        tick.tell(new TickCommand.Disconnected(number(session), reason));
     }
 
     @Override

@@ -24,6 +24,15 @@ public final class NodeSettings {
      * ({@code host:port} each; none: the node joins itself, or is told whom to join).
      */
     public static Config of(String host, int port, List<String> seeds) {
+        return of(host, port, seeds, java.time.Duration.ofSeconds(20));
+    }
+
+    /**
+     * The settings of a node at {@code host:port} joining the cluster through {@code seeds}, which
+     * takes a member that stopped answering for {@code downAfter} for lost (Pekko's split brain
+     * resolver, keeping the side with the most members).
+     */
+    public static Config of(String host, int port, List<String> seeds, java.time.Duration downAfter) {
         String seedNodes = seeds.stream().map(seed -> "\"pekko://" + SYSTEM + "@" + seed + "\"")
                 .collect(Collectors.joining(", ", "[", "]"));
         return ConfigFactory.parseString(String.format(Locale.ROOT, """
@@ -42,12 +51,13 @@ public final class NodeSettings {
                   cluster {
                     seed-nodes = %s
                     downing-provider-class = "org.apache.pekko.cluster.sbr.SplitBrainResolverProvider"
+                    split-brain-resolver.stable-after = %d ms
                     jmx.enabled = off
                     sharding.passivation.strategy = "none"
                   }
                   coordinated-shutdown.exit-jvm = off
                   coordinated-shutdown.run-by-jvm-shutdown-hook = off
                 }
-                """, host, port, seedNodes)).withFallback(ConfigFactory.load());
+                """, host, port, seedNodes, downAfter.toMillis())).withFallback(ConfigFactory.load());
     }
 }

@@ -2,6 +2,7 @@ package io.orchard.cluster.node;
 
 import io.orchard.cluster.order.LineKey;
 import io.orchard.cluster.parcel.OwnedAgent;
+import io.orchard.cluster.parcel.Parcel;
 import io.orchard.cluster.parcel.PathQuery;
 import io.orchard.server.sim.AgentHandover;
 import io.orchard.server.sim.FirstContact;
@@ -20,8 +21,14 @@ public sealed interface ParcelCommand extends ClusterMessage {
     /** Take these agents as own; answered {@link ParcelReply.Done}. */
     record Own(List<OwnedAgent> agents, String replyTo) implements ParcelCommand {}
 
-    /** Give up these own agents; answered {@link ParcelReply.Done}. */
+    /** Give up these own agents; answered {@link ParcelReply.Released}. */
     record Release(List<String> names, String replyTo) implements ParcelCommand {}
+
+    /** Hold these ghosts too; answered {@link ParcelReply.Done}. */
+    record AddGhosts(List<OwnedAgent> ghosts, String replyTo) implements ParcelCommand {}
+
+    /** Forget the ghosts of these agents, which left the game; answered {@link ParcelReply.Done}. */
+    record ForgetGhosts(List<String> names, String replyTo) implements ParcelCommand {}
 
     /** Hold these ghosts and no other, then the perceptions due at {@code tick}; answered {@link ParcelReply.Said}. */
     record Perceive(long tick, double time, List<OwnedAgent> ghosts, String replyTo) implements ParcelCommand {}
@@ -61,4 +68,37 @@ public sealed interface ParcelCommand extends ClusterMessage {
 
     /** Put own agents where they were walked with others; answered {@link ParcelReply.Done}. */
     record PutWalked(List<AgentHandover> agents, String replyTo) implements ParcelCommand {}
+
+    /**
+     * Start a game anew: no agents, and of the world as made only this fruit; answered
+     * {@link ParcelReply.Done}.
+     */
+    record Reset(List<String> fruitLeft, String replyTo) implements ParcelCommand {}
+
+    /**
+     * The parcel's node leaves (Pekko's hand-off): the parcel gives all it holds to the keeper, which
+     * keeps it for the parcel's next start on another node, and then stops. Answered to no one.
+     */
+    record HandOff() implements ParcelCommand {
+        @Override
+        public String replyTo() {
+            return null;
+        }
+    }
+
+    /** The keeper kept the parcel's state: it stops. */
+    record Kept() implements ParcelCommand {
+        @Override
+        public String replyTo() {
+            return null;
+        }
+    }
+
+    /** What the keeper had of the parcel when it started here: the state, or null for none. */
+    record Restored(Parcel.State state) implements ParcelCommand {
+        @Override
+        public String replyTo() {
+            return null;
+        }
+    }
 }

@@ -17,8 +17,15 @@ public sealed interface ParcelReply extends ClusterMessage {
     /** The first contact on each path asked about, in order; null for a path that meets none. */
     record Contacts(List<FirstContact> contacts) implements ParcelReply {}
 
-    /** The lines said applying the tick's messages, the grasps asked for, and the own agents after. */
-    record Applied(List<Wire.Line> lines, List<Wire.Grasp> claims, List<AgentHandover> owned) implements ParcelReply {}
+    /** The own agents given up, as they were. */
+    record Released(List<AgentHandover> agents) implements ParcelReply {}
+
+    /**
+     * The lines said applying the tick's messages, the grasps asked for, the own agents after, and
+     * the agents that unregistered.
+     */
+    record Applied(List<Wire.Line> lines, List<Wire.Grasp> claims, List<AgentHandover> owned, List<String> removed)
+            implements ParcelReply {}
 
     /** The lines said deciding the grasps, and the fruit taken. */
     record Grasped(List<Wire.Line> lines, List<Parcel.Taken> taken) implements ParcelReply {}

@@ -1,6 +1,7 @@
 package io.orchard.cluster.node;
 
 import io.orchard.cluster.game.FirstContacts;
+import io.orchard.cluster.game.ParcelLost;
 import io.orchard.cluster.game.Parcels;
 import io.orchard.cluster.order.KeyedLine;
 import io.orchard.cluster.order.LineKey;
@@ -20,11 +21,13 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 import java.util.function.BiFunction;
 import java.util.function.Function;
+import org.apache.pekko.actor.typed.ActorRef;
 import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.ActorSystem;
 import org.apache.pekko.cluster.sharding.typed.javadsl.ClusterSharding;
@@ -42,22 +45,37 @@ public final class ShardedParcels implements Parcels {
 
     private final ClusterSharding sharding;
     private final ActorRefResolver resolver;
-    private final Map<ParcelId, Integer> agents = new TreeMap<>();
+    private final ParcelGrid grid;
+    /** Fails every step under way at once when the game is rolled back: a parcel may never answer. */
+    private volatile CompletableFuture<Object> aborted = new CompletableFuture<>();
 
-    private ShardedParcels(ActorSystem<?> system) {
+    /** The parcels of {@code grid}, reached from this node of {@code system}'s cluster. */
+    public ShardedParcels(ActorSystem<?> system, ParcelGrid grid) {
         this.sharding = ClusterSharding.get(system);
         this.resolver = ActorRefResolver.get(system);
+        this.grid = grid;
     }
 
     /**
-     * Starts the parcels' sharding on this node of {@code system}'s cluster, each parcel made from this
-     * node's {@code world} (the same on every node), and returns what reaches them. Every node of the
-     * cluster calls it, for the same grid, world and settings.
+     * Hosts parcels on this node of {@code system}'s cluster, each made from this node's
+     * {@code world} (the same on every node), their states kept by {@code keeper} while Pekko moves
+     * them (null: they move without). Every node of the cluster calls it, for the same grid, world
+     * and settings.
+     */
+    public static void host(ActorSystem<?> system, ParcelGrid grid, World world, SimulationConfig config,
+                            ActorRef<TickCommand> keeper) {
+        ClusterSharding.get(system).init(Entity.of(ParcelEntity.TYPE,
+                context -> ParcelEntity.create(context.getEntityId(), grid, world, config, keeper))
+                .withStopMessage(new ParcelCommand.HandOff()));
+    }
+
+    /**
+     * Hosts parcels on this node without a keeper ({@link #host}) and returns what reaches them: for a
+     * cluster whose nodes stay.
      */
     public static ShardedParcels start(ActorSystem<?> system, ParcelGrid grid, World world, SimulationConfig config) {
-        ClusterSharding.get(system).init(Entity.of(ParcelEntity.TYPE,
-                context -> ParcelEntity.create(context.getEntityId(), grid, world, config)));
-        return new ShardedParcels(system);
+        host(system, grid, world, config, null);
+        return new ShardedParcels(system, grid);
     }
 
     /** Asks each parcel its command at once and waits for every answer, by parcel. */
@@ -72,10 +90,11 @@ public final class ShardedParcels implements Parcels {
                     .toCompletableFuture());
         }
         Map<ParcelId, R> answers = new TreeMap<>();
+        CompletableFuture<Object> abort = aborted;
         try {
-            asked.forEach((id, answer) -> answers.put(id, (R) answer.join()));
+            asked.forEach((id, answer) -> answers.put(id, (R) CompletableFuture.anyOf(answer, abort).join()));
         } catch (CompletionException e) {
-            throw new IllegalStateException("a parcel did not answer: " + e.getCause(), e.getCause());
+            throw new ParcelLost("a parcel did not answer: " + e.getCause().getMessage(), e.getCause());
         }
         return answers;
     }
@@ -90,23 +109,52 @@ public final class ShardedParcels implements Parcels {
         return lines;
     }
 
+    /** Fails every step under way, and every step asked from now on until {@link #carryOn()}. */
+    public void abort(String why) {
+        aborted.completeExceptionally(new IllegalStateException(why));
+    }
+
+    /** Steps are asked again after an {@link #abort}. */
+    public void carryOn() {
+        if (aborted.isDone()) {
+            aborted = new CompletableFuture<>();
+        }
+    }
+
+    @Override
+    public void reset(Set<String> fruitLeft) {
+        List<String> left = List.copyOf(fruitLeft);
+        ask(grid.all(), id -> replyTo -> new ParcelCommand.Reset(left, replyTo));
+    }
+
     @Override
     public void own(Map<ParcelId, List<OwnedAgent>> owned) {
-        owned.forEach((id, list) -> agents.merge(id, list.size(), Integer::sum));
         tellEach(owned, ParcelCommand.Own::new);
     }
 
     @Override
-    public void release(Map<ParcelId, List<String>> names) {
-        names.forEach((id, list) -> agents.merge(id, -list.size(), Integer::sum));
-        agents.values().removeIf(count -> count <= 0);
-        tellEach(names, ParcelCommand.Release::new);
+    public List<AgentHandover> release(Map<ParcelId, List<String>> names) {
+        Map<ParcelId, ParcelReply.Released> released = ask(names.keySet(),
+                id -> replyTo -> new ParcelCommand.Release(names.get(id), replyTo));
+        List<AgentHandover> all = new ArrayList<>();
+        released.values().forEach(r -> all.addAll(r.agents()));
+        return all;
+    }
+
+    @Override
+    public void addGhosts(Map<ParcelId, List<OwnedAgent>> ghosts) {
+        tellEach(ghosts, ParcelCommand.AddGhosts::new);
+    }
+
+    @Override
+    public void forgetGhosts(Map<ParcelId, List<String>> names) {
+        tellEach(names, ParcelCommand.ForgetGhosts::new);
     }
 
     @Override
     public List<KeyedLine> perceive(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
-        Map<ParcelId, ParcelReply.Said> said = ask(agents.keySet(), id -> replyTo -> new ParcelCommand.Perceive(tick,
-                time, ghosts.getOrDefault(id, List.of()), replyTo));
+        Map<ParcelId, ParcelReply.Said> said = ask(ghosts.keySet(), id -> replyTo -> new ParcelCommand.Perceive(tick,
+                time, ghosts.get(id), replyTo));
         return lines(said.values().stream().map(ParcelReply.Said::lines).toList());
     }
 
@@ -128,11 +176,14 @@ public final class ShardedParcels implements Parcels {
                 time, acts.get(id).stream().map(Wire.Act::of).toList(), far, replyTo));
         List<Parcel.KeyedClaim> claims = new ArrayList<>();
         List<AgentHandover> owned = new ArrayList<>();
+        List<String> removed = new ArrayList<>();
         applied.values().forEach(a -> {
             a.claims().forEach(claim -> claims.add(claim.keyed()));
             owned.addAll(a.owned());
+            removed.addAll(a.removed());
         });
-        return new Applied(lines(applied.values().stream().map(ParcelReply.Applied::lines).toList()), claims, owned);
+        return new Applied(lines(applied.values().stream().map(ParcelReply.Applied::lines).toList()), claims, owned,
+                removed);
     }
 
     @Override
@@ -154,8 +205,8 @@ public final class ShardedParcels implements Parcels {
 
     @Override
     public Walked walk(long tick, double time, Map<ParcelId, List<OwnedAgent>> ghosts) {
-        Map<ParcelId, ParcelReply.Walked> walked = ask(agents.keySet(), id -> replyTo -> new ParcelCommand.Walk(tick,
-                time, ghosts.getOrDefault(id, List.of()), replyTo));
+        Map<ParcelId, ParcelReply.Walked> walked = ask(ghosts.keySet(), id -> replyTo -> new ParcelCommand.Walk(tick,
+                time, ghosts.get(id), replyTo));
         List<AgentHandover> left = new ArrayList<>();
         List<AgentHandover> owned = new ArrayList<>();
         walked.values().forEach(w -> {

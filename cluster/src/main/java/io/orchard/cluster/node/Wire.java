@@ -11,6 +11,7 @@ import io.orchard.protocol.message.ServerMessage;
 import io.orchard.server.sim.AgentHandover;
 import io.orchard.server.sim.MissedTurn;
 import io.orchard.server.sim.PartialSimulation.Claim;
+import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.Recorder.Audience;
 
 /**
@@ -57,15 +58,16 @@ final class Wire {
      * @param key     its place
      * @param session its client
      * @param message the message
+     * @param phase   the game's phase when it is applied
      */
-    record Act(LineKey key, SessionRef session, String message) {
+    record Act(LineKey key, SessionRef session, String message, Phase phase) {
 
         static Act of(Parcel.Act act) {
-            return new Act(act.key(), act.session(), CODEC.encode(act.message()));
+            return new Act(act.key(), act.session(), CODEC.encode(act.message()), act.phase());
         }
 
         Parcel.Act act() {
-            return new Parcel.Act(key, session, (ClientMessage) CODEC.decode(message));
+            return new Parcel.Act(key, session, (ClientMessage) CODEC.decode(message), phase);
         }
     }
 

@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 
 /**
@@ -27,23 +28,34 @@ public final class KeyedLines implements Recorder {
 
     private final List<KeyedLine> lines = new ArrayList<>();
     private final Map<LineKey, Integer> said = new HashMap<>();
-    private Function<Message, LineKey> place = message -> {
+    /** Where what is said now belongs, from the message said (null for a missed turn's line) and the missed turn. */
+    private BiFunction<Message, MissedTurn, LineKey> place = (message, missed) -> {
         throw new IllegalStateException("a line was said with no place given for it: " + message);
     };
+    /** Whether the last line said went to one client, whose session reports its delivery next. */
+    private boolean awaitingDelivery;
 
     /** What is said from now on belongs to one cause, in the order said. */
     public void cause(LineKey key) {
-        place = message -> key;
+        place = (message, missed) -> key;
     }
 
     /** What is said from now on in {@code step} of {@code tick} is about an agent: ordered by its name. */
     public void byAgent(long tick, LineKey.Step step) {
-        place = message -> new LineKey(tick, step, agentOf(message), 0, 0, 0);
+        place = (message, missed) -> new LineKey(tick, step, agentOf(message), 0, 0, 0);
     }
 
     /** What is said from now on is about a fruit, in the place {@code firstClaims} gives that fruit. */
     public void byFruit(Function<String, LineKey> firstClaims) {
-        place = message -> firstClaims.apply(fruitOf(message));
+        place = (message, missed) -> firstClaims.apply(fruitOf(message));
+    }
+
+    /**
+     * What is said from now on are the turns missed in {@code tick}: client by client in the order of
+     * their agents' names, as a missed turn names its client's agents.
+     */
+    public void byMissedTurn(long tick) {
+        place = (message, missed) -> new LineKey(tick, LineKey.Step.MISSED, missed.agents().get(0), 0, 0, 0);
     }
 
     @Override
@@ -54,6 +66,7 @@ public final class KeyedLines implements Recorder {
     @Override
     public void sent(long tick, double time, Audience to, String client, Message message) {
         add(tick, time, to, client, message, null);
+        awaitingDelivery = to == Audience.CLIENT;
     }
 
     @Override
@@ -62,15 +75,39 @@ public final class KeyedLines implements Recorder {
     }
 
     private void add(long tick, double time, Audience to, String client, Message message, MissedTurn missed) {
-        LineKey at = place.apply(message);
-        int number = said.merge(at, 1, Integer::sum) - 1;
-        lines.add(new KeyedLine(at.line(number), tick, time, to, client, message, missed, null, null));
+        awaitingDelivery = false;
+        lines.add(new KeyedLine(next(message, missed), tick, time, to, client, message, missed, null, null));
     }
 
-    /** The last line said goes to {@code session} as {@code message}: what a part's session proxy reports. */
+    /** The key of the next line said at the current place. */
+    private LineKey next(Message message, MissedTurn missed) {
+        LineKey at = place.apply(message, missed);
+        return at.line(said.merge(at, 1, Integer::sum) - 1);
+    }
+
+    /**
+     * {@code message} goes to {@code session}: what a part's session reports. It is the last line
+     * said, when that went to one client; else a message the recording does not hold (the game is
+     * over, and no longer recorded), delivered in its place all the same.
+     */
     void delivered(SessionRef session, ServerMessage message) {
-        int last = lines.size() - 1;
-        lines.set(last, lines.get(last).deliveredTo(session, message));
+        if (awaitingDelivery) {
+            int last = lines.size() - 1;
+            lines.set(last, lines.get(last).deliveredTo(session, message));
+            awaitingDelivery = false;
+        } else {
+            caughtUp(session, message);
+        }
+    }
+
+    /** A message for one client, in the current place, that is not recorded: it catches up with the game. */
+    public void caughtUp(SessionRef session, ServerMessage message) {
+        lines.add(KeyedLine.catchUp(next(message, null), session, message));
+    }
+
+    /** A client joins the audiences of broadcasts in the current place. */
+    public void joined(SessionRef session) {
+        lines.add(KeyedLine.joining(next(null, null), session));
     }
 
     /** Takes every line said so far. */
@@ -78,6 +115,7 @@ public final class KeyedLines implements Recorder {
         List<KeyedLine> taken = new ArrayList<>(lines);
         lines.clear();
         said.clear();
+        awaitingDelivery = false;
         return taken;
     }
 

@@ -10,8 +10,9 @@ import java.util.Comparator;
  * @param tick  the tick
  * @param step  the step of the tick
  * @param name  within the step: the agent's name (perceive, walk), the client's first agent's name
- *              (apply; empty for a client without agents), or that of the first claim (grasp)
- * @param first within the step and name: the connection of a client without agents
+ *              (apply, missed; empty for a client without agents), or that of the first claim (grasp)
+ * @param first within the step and name: the connection of a client without agents; while no tick
+ *              passes, the number of what came
  * @param index within the client: the message's place among those it sent in the tick
  * @param line  the line's place among those its cause said
  */
@@ -20,6 +21,8 @@ public record LineKey(long tick, Step step, String name, long first, long index,
 
     /** The steps of a tick, in the single server's order (docs/protocol.md, 10.2). */
     public enum Step {
+        /** What clients sent while no tick passes (before the tick of the key), in the order it came. */
+        IDLE,
         /** The {@code Tick} to every client. */
         TICK,
         /** The perceptions, agent by agent in the order of their names. */

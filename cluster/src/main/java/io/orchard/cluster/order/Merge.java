@@ -16,13 +16,16 @@ import java.util.TreeMap;
 /**
  * Puts the lines that the parts of a world said in a step in the single server's order, by key,
  * and then writes them to the recording and to the clients: each message sent to one client to that
- * client, each broadcast to every connected client of its audience, encoded once for all of them,
- * as the single server's outbox does.
+ * client, each broadcast to every client of its audience, encoded once for all of them, as the single
+ * server's outbox does. A client hears broadcasts from the line where it joined their audiences
+ * ({@link KeyedLine#joining}) on; messages to it alone from when it connected.
  */
 public final class Merge {
 
     private static final MessageCodec CODEC = new MessageCodec();
 
+    /** Every client connected, by number. */
+    private final Map<Long, ClientSession> connected = new TreeMap<>();
     private final Map<Long, ClientSession> all = new TreeMap<>();
     private final Map<Long, ClientSession> viewers = new TreeMap<>();
     private final Map<Long, ClientSession> agentClients = new TreeMap<>();
@@ -33,7 +36,12 @@ public final class Merge {
         this.recorder = recorder;
     }
 
-    /** A client connected: broadcasts reach it from now on. */
+    /** A client connected: messages to it alone reach it from now on. */
+    public void connected(ClientSession session) {
+        connected.put(session.id(), session);
+    }
+
+    /** A connected client joins the audiences of broadcasts now. */
     public void join(ClientSession session) {
         all.put(session.id(), session);
         (session.role() == Role.VIEWER ? viewers : agentClients).put(session.id(), session);
@@ -41,6 +49,7 @@ public final class Merge {
 
     /** A client left. */
     public void leave(ClientSession session) {
+        connected.remove(session.id());
         all.remove(session.id());
         viewers.remove(session.id());
         agentClients.remove(session.id());
@@ -53,8 +62,10 @@ public final class Merge {
         for (KeyedLine line : lines) {
             line.writeTo(recorder);
             if (line.target() != null) {
-                ClientSession to = all.get(line.target().id());
-                if (to != null) {
+                ClientSession to = connected.get(line.target().id());
+                if (to != null && line.joins()) {
+                    join(to);
+                } else if (to != null) {
                     to.send(line.sent());
                 }
             } else if (line.to() != null && line.to() != Audience.CLIENT) {
@@ -73,7 +84,7 @@ public final class Merge {
 
     /** Sends what the clients have queued and writes out the recording. */
     public void flush() {
-        all.values().forEach(ClientSession::flush);
+        connected.values().forEach(ClientSession::flush);
         recorder.flush();
     }
 

@@ -14,12 +14,15 @@ import io.orchard.server.sim.GameListener;
 import io.orchard.server.sim.PartialSimulation;
 import io.orchard.server.sim.PartialSimulation.Claim;
 import io.orchard.server.sim.PartialSimulation.Driven;
+import io.orchard.server.sim.Phase;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.world.World;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.function.Function;
 
 /**
@@ -49,15 +52,37 @@ public final class Parcel {
      */
     public record Taken(String agent, String fruit, FruitKind kind, double time) {}
 
+    /**
+     * All a parcel holds between two steps of a tick, to be taken up by the same parcel on another
+     * node (Pekko hands a parcel over when its node leaves). A value, sent between nodes.
+     *
+     * @param own       its own agents, as they are now
+     * @param ghosts    the other parcels' agents it holds
+     * @param fruitGone the fruit of the world as made that is gone from its copy
+     */
+    public record State(List<OwnedAgent> own, List<OwnedAgent> ghosts, List<String> fruitGone) {
+
+        /** Whether the parcel had agents of its own. */
+        public boolean hasAgents() {
+            return !own.isEmpty();
+        }
+    }
+
     private final ParcelId id;
     private final ParcelGrid grid;
     private final double maxRadius;
     private final KeyedLines lines = new KeyedLines();
     private final PartialSimulation part;
     private final Map<Long, ProxySession> proxies = new HashMap<>();
+    /** Every agent it was given, own or ghost, as given: their clients and labels. */
+    private final Map<String, OwnedAgent> known = new HashMap<>();
+    private final World world;
+    private final Set<String> fruitGone = new TreeSet<>();
     /** The places of this tick's grasp requests, in the order applied. */
     private final List<LineKey> requests = new ArrayList<>();
     private final List<Taken> taken = new ArrayList<>();
+    /** Own agents that unregistered since last asked. */
+    private final List<String> removed = new ArrayList<>();
     /** The first contacts on this tick's paths that leave the halo, as the parcels along them answered. */
     private Map<PathQuery, FirstContact> far = Map.of();
 
@@ -71,7 +96,13 @@ public final class Parcel {
             public void fruitEaten(String agent, String fruit, FruitKind kind, double time) {
                 taken.add(new Taken(agent, fruit, kind, time));
             }
+
+            @Override
+            public void agentLeft(String agent, String reason) {
+                removed.add(agent);
+            }
         };
+        this.world = world;
         this.part = new PartialSimulation(world, config, lines, listener, this::elsewhere);
     }
 
@@ -102,6 +133,7 @@ public final class Parcel {
     }
 
     private Driven driven(OwnedAgent agent) {
+        known.put(agent.agent().name(), agent);
         return new Driven(agent.agent(), proxy(agent.owner()), agent.label());
     }
 
@@ -110,15 +142,72 @@ public final class Parcel {
         agents.forEach(agent -> part.own(driven(agent)));
     }
 
+    /** All it holds now. */
+    public State state() {
+        return new State(held(part.owned()), held(part.ghosts()), new ArrayList<>(fruitGone));
+    }
+
+    /** The agents as they are now, with the clients and labels they were given with. */
+    private List<OwnedAgent> held(List<AgentHandover> agents) {
+        List<OwnedAgent> held = new ArrayList<>();
+        for (AgentHandover agent : agents) {
+            OwnedAgent given = known.get(agent.name());
+            held.add(new OwnedAgent(agent, given.owner(), given.label()));
+        }
+        return held;
+    }
+
+    /** Takes up what the same parcel held on another node. */
+    public void restore(State state) {
+        fruitTaken(state.fruitGone());
+        own(state.own());
+        addGhosts(state.ghosts());
+    }
+
+    /** Keeps only this fruit of the world as made: the rest was taken before it came to be. */
+    public void keepOnly(Set<String> fruitLeft) {
+        List<String> gone = new ArrayList<>();
+        world.fruit().forEach(fruit -> {
+            if (!fruitLeft.contains(fruit.id())) {
+                gone.add(fruit.id());
+            }
+        });
+        fruitTaken(gone);
+    }
+
     /** Holds these copies of other parcels' agents, and no other. */
     public void ghosts(List<OwnedAgent> ghosts) {
         part.forgetGhosts();
         ghosts.forEach(ghost -> part.ghost(driven(ghost)));
     }
 
-    /** Gives up own agents. */
-    public void release(List<String> names) {
-        names.forEach(part::release);
+    /** Gives up own agents; returns them as they are now (none for a name it does not own). */
+    public List<AgentHandover> release(List<String> names) {
+        List<AgentHandover> released = new ArrayList<>();
+        for (String name : names) {
+            AgentHandover agent = part.release(name);
+            if (agent != null) {
+                released.add(agent);
+            }
+        }
+        return released;
+    }
+
+    /** Holds these copies of other parcels' agents too, in place of any it held of them. */
+    public void addGhosts(List<OwnedAgent> ghosts) {
+        ghosts.forEach(ghost -> part.ghost(driven(ghost)));
+    }
+
+    /** Forgets the ghosts of agents that left the game. */
+    public void forgetGhosts(List<String> names) {
+        names.forEach(part::forgetGhost);
+    }
+
+    /** The own agents that unregistered since last asked; forgets them. */
+    public List<String> takeRemoved() {
+        List<String> gone = new ArrayList<>(removed);
+        removed.clear();
+        return gone;
     }
 
     /** The own agents as they are now. */
@@ -152,7 +241,7 @@ public final class Parcel {
         far = answers;
         for (Act act : acts) {
             lines.cause(act.key());
-            part.act(proxy(act.session()), act.message());
+            part.act(proxy(act.session()), act.message(), act.phase());
             if (act.message() instanceof GraspRequestMessage) {
                 requests.add(act.key());
             }
@@ -181,17 +270,22 @@ public final class Parcel {
      */
     public List<KeyedLine> grasp(long tick, double time, List<ClaimOf> claims, Function<String, LineKey> firstClaims,
                                  List<Taken> took) {
-        claims.forEach(c -> part.claim(c.claim(), proxy(c.owner()), c.label()));
+        claims.forEach(c -> {
+            known.put(c.claim().agent().name(), new OwnedAgent(c.claim().agent(), c.owner(), c.label()));
+            part.claim(c.claim(), proxy(c.owner()), c.label());
+        });
         part.at(tick, time);
         lines.byFruit(firstClaims);
         taken.clear();
         part.resolveGrasps();
+        taken.forEach(fruit -> fruitGone.add(fruit.fruit()));
         took.addAll(taken);
         return lines.take();
     }
 
     /** Fruit in its halo was taken. */
     public void fruitTaken(List<String> fruit) {
+        fruitGone.addAll(fruit);
         fruit.forEach(part::fruitTaken);
     }
 
@@ -216,8 +310,9 @@ public final class Parcel {
      * @param key     its place
      * @param session the client that sent it
      * @param message the message
+     * @param phase   the game's phase when it is applied
      */
-    public record Act(LineKey key, SessionRef session, ClientMessage message) {}
+    public record Act(LineKey key, SessionRef session, ClientMessage message, Phase phase) {}
 
     /**
      * A grasp of a parcel's fruit, with the client of the grasping agent. A value, sent between nodes.

@@ -53,17 +53,26 @@ final class Forager implements Player {
         return List.of(new RegisterMessage(++seq, name, body, null, null));
     }
 
+    /** Its registration with the resume token of the agent of its name that left. */
+    List<ClientMessage> resume(String token) {
+        return List.of(new RegisterMessage(++seq, name, body, null, token));
+    }
+
     /** After its registration: perceive every tick, and end the setup turn. */
     @Override
     public List<ClientMessage> setUp() {
+        return setUpIn(0);
+    }
+
+    /** After its registration in a game under way: perceive every tick, and end the turn of {@code tick}. */
+    List<ClientMessage> setUpIn(long tick) {
         List<ClientMessage> out = new ArrayList<>();
-        for (ServerMessage message : session.read()) {
-            if (!(message instanceof RegisteredMessage)) {
-                throw new AssertionError(name + " was not registered: " + message);
-            }
+        List<ServerMessage> read = session.read();
+        if (read.stream().noneMatch(RegisteredMessage.class::isInstance)) {
+            throw new AssertionError(name + " was not registered: " + read);
         }
         out.add(new PerceptionRequestMessage(++seq, name, 1));
-        out.add(new EndTurnMessage(++seq, 0));
+        out.add(new EndTurnMessage(++seq, tick));
         return out;
     }
 

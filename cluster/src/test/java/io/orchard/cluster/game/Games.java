@@ -39,6 +39,8 @@ final class Games {
 
         void received(ClientSession session, ClientMessage message);
 
+        void disconnected(ClientSession session, String reason);
+
         void applyNow();
 
         void beginTick();
@@ -80,6 +82,11 @@ final class Games {
 
     /** Plays the game to its end. */
     static void play(Game game, List<Player> agents) {
+        play(game, agents, tick -> { });
+    }
+
+    /** Plays the game to its end, telling {@code between} each tick that ended, before the next begins. */
+    static void play(Game game, List<Player> agents, java.util.function.LongConsumer between) {
         agents.forEach(agent -> game.connected(agent.session()));
         game.applyNow();
         send(game, agents, Player::register);
@@ -94,6 +101,7 @@ final class Games {
                 agent.act(tick).forEach(message -> game.received(agent.session(), message));
             }
             game.endTick();
+            between.accept(tick);
         }
     }
 
@@ -109,18 +117,38 @@ final class Games {
         Path recording = dir.resolve("single.ndjson");
         try (FileRecorder recorder = FileRecorder.open(recording)) {
             Simulation simulation = new Simulation(world, config, SEED, "test", recorder, List.of(), placement);
-            play(new Game() {
-                public void connected(ClientSession s) { simulation.connected(s); }
-                public void received(ClientSession s, ClientMessage m) { simulation.received(s, m); }
-                public void applyNow() { simulation.applyNow(); }
-                public void beginTick() { simulation.beginTick(); }
-                public void endTick() { simulation.endTick(); }
-                public Phase phase() { return simulation.phase(); }
-                public long tick() { return simulation.tick(); }
-            }, agents);
+            play(of(simulation), agents);
             simulation.stopped();
         }
         return recording;
+    }
+
+    /** The single server's simulation, stepped as a game. */
+    static Game of(Simulation simulation) {
+        return new Game() {
+            public void connected(ClientSession s) { simulation.connected(s); }
+            public void received(ClientSession s, ClientMessage m) { simulation.received(s, m); }
+            public void disconnected(ClientSession s, String r) { simulation.disconnected(s, r); }
+            public void applyNow() { simulation.applyNow(); }
+            public void beginTick() { simulation.beginTick(); }
+            public void endTick() { simulation.endTick(); }
+            public Phase phase() { return simulation.phase(); }
+            public long tick() { return simulation.tick(); }
+        };
+    }
+
+    /** A split game, stepped as a game. */
+    static Game of(SplitGame split) {
+        return new Game() {
+            public void connected(ClientSession s) { split.connected(s); }
+            public void received(ClientSession s, ClientMessage m) { split.received(s, m); }
+            public void disconnected(ClientSession s, String r) { split.disconnected(s, r); }
+            public void applyNow() { split.applyNow(); }
+            public void beginTick() { split.beginTick(); }
+            public void endTick() { split.endTick(); }
+            public Phase phase() { return split.phase(); }
+            public long tick() { return split.tick(); }
+        };
     }
 
     /**
@@ -129,17 +157,16 @@ final class Games {
      */
     static SplitCounts split(Path dir, World world, SimulationConfig config, Placement placement, List<Player> agents,
                              Function<ParcelGrid, Parcels> parcels) throws Exception {
+        return split(dir, world, config, placement, agents, parcels, tick -> { });
+    }
+
+    /** As {@link #split}, telling {@code between} each tick that ended. */
+    static SplitCounts split(Path dir, World world, SimulationConfig config, Placement placement, List<Player> agents,
+                             Function<ParcelGrid, Parcels> parcels, java.util.function.LongConsumer between)
+            throws Exception {
         try (FileRecorder recorder = FileRecorder.open(dir.resolve("split.ndjson"))) {
             SplitGame split = new SplitGame(world, config, SEED, "test", recorder, List.of(), 25, placement, parcels);
-            play(new Game() {
-                public void connected(ClientSession s) { split.connected(s); }
-                public void received(ClientSession s, ClientMessage m) { split.received(s, m); }
-                public void applyNow() { split.applyNow(); }
-                public void beginTick() { split.beginTick(); }
-                public void endTick() { split.endTick(); }
-                public Phase phase() { return split.phase(); }
-                public long tick() { return split.tick(); }
-            }, agents);
+            play(of(split), agents, between);
             return split.counts();
         }
     }

@@ -15,6 +15,7 @@ final class TestSession implements ClientSession {
     private final long id;
     private final Role role;
     private final List<ServerMessage> unread = new ArrayList<>();
+    private final List<ServerMessage> all = new ArrayList<>();
 
     TestSession(long id, Role role) {
         this.id = id;
@@ -37,13 +38,14 @@ final class TestSession implements ClientSession {
     }
 
     @Override
-    public void send(ServerMessage message) {
+    public synchronized void send(ServerMessage message) {
         unread.add(message);
+        all.add(message);
     }
 
     @Override
     public void send(EncodedLine line) {
-        unread.add(line.message());
+        send(line.message());
     }
 
     @Override
@@ -51,7 +53,7 @@ final class TestSession implements ClientSession {
 
     @Override
     public void close(ErrorMessage last) {
-        unread.add(last);
+        send(last);
     }
 
     @Override
@@ -59,8 +61,13 @@ final class TestSession implements ClientSession {
         return true;
     }
 
+    /** Everything it was sent, in order. */
+    synchronized List<ServerMessage> all() {
+        return List.copyOf(all);
+    }
+
     /** What came since the last read. */
-    List<ServerMessage> read() {
+    synchronized List<ServerMessage> read() {
         List<ServerMessage> read = new ArrayList<>(unread);
         unread.clear();
         return read;

@@ -165,6 +165,24 @@ final class Outbox {
         recorder.flush();
     }
 
+    /**
+     * From now on records to {@code to} and sends to no client of its own: for a part of a game
+     * whose caller records what it says and hands it to the clients itself ({@link Referee}).
+     * The clients' labels are kept.
+     */
+    void recordOnly(Recorder to) {
+        release();
+        recorder = to;
+        sessions.clear();
+        viewers.clear();
+        agentClients.clear();
+    }
+
+    /** Forgets how the record names a client that left. */
+    void forgetLabel(ClientSession session) {
+        labels.remove(session.id());
+    }
+
     /** Records nothing more: the game is over. */
     void stopRecording() {
         release();

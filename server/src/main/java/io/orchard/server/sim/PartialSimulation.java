@@ -123,6 +123,14 @@ public final class PartialSimulation {
         walking.agentsChanged();
     }
 
+    /** Forgets the ghost of that name, if it holds one: the agent left the game. */
+    public void forgetGhost(String name) {
+        if (ghosts.remove(name)) {
+            agents.remove(name);
+            walking.agentsChanged();
+        }
+    }
+
     /** Forgets every ghost: fresh copies follow. */
     public void forgetGhosts() {
         ghosts.forEach(agents::remove);
@@ -155,6 +163,17 @@ public final class PartialSimulation {
             }
         }
         return own;
+    }
+
+    /** The ghosts held, as they are now, by name. */
+    public List<AgentHandover> ghosts() {
+        List<AgentHandover> held = new ArrayList<>();
+        for (Agent agent : agents.values()) {
+            if (ghosts.contains(agent.name)) {
+                held.add(agent.handover());
+            }
+        }
+        return held;
     }
 
     /** The own agent of that name as it is now, or null. */
@@ -205,19 +224,19 @@ public final class PartialSimulation {
     }
 
     /**
-     * Applies a message that {@code session} sent about one of this part's own agents during the
-     * running game, recording it first, as the single server applies it.
+     * Applies a message that {@code session} sent about one of this part's own agents in a game at
+     * {@code phase} (once it has started), recording it first, as the single server applies it.
      *
      * @throws IllegalArgumentException when the message is not about an agent
      */
-    public void act(ClientSession session, ClientMessage message) {
+    public void act(ClientSession session, ClientMessage message, Phase phase) {
         if (!(message instanceof AgentMessage action)) {
             throw new IllegalArgumentException("a part applies messages about agents, not "
                     + message.getClass().getSimpleName());
         }
         outbox.from(session);
         outbox.accepted(session, message);
-        actions.act(session, message.seq(), action, Phase.RUNNING);
+        actions.act(session, message.seq(), action, phase);
         outbox.from(null);
     }
 

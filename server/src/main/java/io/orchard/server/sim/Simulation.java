@@ -23,7 +23,6 @@ import io.orchard.server.world.World;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
@@ -298,7 +297,7 @@ public final class Simulation implements Inbox {
      * The start of a lockstep game is due ({@link #startDue()}) but these agents' clients have not
      * ended their setup turns in time: they are recorded as missed, and the game starts without them.
      */
-    void startWithoutSetup() {
+    public void startWithoutSetup() {
         if (!game.startDue()) {
             return;
         }
@@ -311,7 +310,7 @@ public final class Simulation implements Inbox {
     }
 
     /** Whether a lockstep game has its agents and starts once their setup turns are over. */
-    boolean startDue() {
+    public boolean startDue() {
         return game.startDue();
     }
 
@@ -388,9 +387,8 @@ public final class Simulation implements Inbox {
     public Checkpoint checkpoint() {
         List<Checkpoint.SavedAgent> saved = registrations.waiting();
         agents.values().forEach(agent -> saved.add(agent.saved()));
-        return new Checkpoint(Checkpoint.FORMAT, seed, config.tickRate(), config.clock(), config.timeLimit(),
-                config.waitFor(), game.phase().name().toLowerCase(Locale.ROOT), outbox.tick(), outbox.time(),
-                game.fruitAtStart(), world.toScenario(), saved, scores.ranking());
+        return Checkpoint.of(seed, config, game.phase(), outbox.tick(), outbox.time(), game.fruitAtStart(), world,
+                saved, scores.ranking());
     }
 
     /**
@@ -427,16 +425,16 @@ public final class Simulation implements Inbox {
     }
 
     /**
-     * Every agent in the world, as it is now, with the session that drives it: for a program that
-     * hands a game that has started to parts of a world ({@link PartialSimulation}). Call on the
-     * simulation's thread.
+     * Hands the game that has started over to a referee, for a program that goes on with its world
+     * simulated in parts ({@link PartialSimulation}): its agents, registrations, reserved names,
+     * scores, phase and turns. From now on what the referee says goes to {@code recorder} alone (the
+     * caller hands it to the clients); this simulation is not used again. Call on the simulation's
+     * thread.
      */
-    public List<PartialSimulation.Driven> handOver() {
-        List<PartialSimulation.Driven> all = new ArrayList<>();
-        for (Agent agent : agents.values()) {
-            all.add(new PartialSimulation.Driven(agent.handover(), agent.owner, outbox.label(agent.owner)));
-        }
-        return all;
+    public Referee referee(Recorder recorder) {
+        outbox.recordOnly(recorder);
+        return new Referee(world, config, seed, agents, registrations, game, scores, turns, outbox, walking,
+                listeners);
     }
 
     /** Names of the agents of a restored game that are still waiting for their controllers. */
