@@ -17,7 +17,10 @@ dependencies {
     // AgentMain hands its picocli CommandLines to launchers.
     api(libs.picocli)
     // Checks a language model's goal against the goals' JSON Schema (LanguageModelInterpreter).
-    implementation(libs.json.schema.validator)
+    implementation(libs.json.schema.validator) {
+        // JSON schemas only; see agents/pom.xml for why YAML stays out.
+        exclude(group = "tools.jackson.dataformat", module = "jackson-dataformat-yaml")
+    }
 
     // Agents are tested against a real server, which they never depend on otherwise.
     testImplementation(project(":server"))

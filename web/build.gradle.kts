@@ -40,6 +40,7 @@ val page by tasks.registering(Exec::class) {
     val site = layout.buildDirectory.dir("site/io/orchard/web/site")
     workingDir = projectDir
     inputs.dir("src/main/site")
+    inputs.dir("../viewer/src/main/resources/io/orchard/viewer/bundled")
     inputs.file("build.mjs")
     outputs.dir(site)
     commandLine("node", "build.mjs", site.get().asFile.path)

@@ -1,5 +1,6 @@
-// Puts the page together for the jar: the page's own files from src/main/site, and the parts of
-// three.js it imports, copied from node_modules (installed by `npm ci` from package-lock.json) into
+// Puts the page together for the jar: the page's own files from src/main/site, the bundled models
+// (the Java viewer's own X3D files, one source for both viewers), and the parts of three.js it
+// imports, copied from node_modules (installed by `npm ci` from package-lock.json) into
 // vendor/ with their relative layout. The loaders import the bare name 'three', which a browser
 // resolves only through an import map, an inline script the Content-Security-Policy forbids; so
 // the copies import three.module.js by its path instead.
@@ -12,6 +13,7 @@ if (!out) {
     process.exit(2);
 }
 cpSync('src/main/site', out, { recursive: true });
+cpSync('../viewer/src/main/resources/io/orchard/viewer/bundled', join(out, 'bundled'), { recursive: true });
 
 const three = 'node_modules/three';
 const files = [
@@ -19,8 +21,7 @@ const files = [
     'build/three.module.js',
     'build/three.core.js',
     'examples/jsm/loaders/GLTFLoader.js',
-    'examples/jsm/loaders/VRMLLoader.js',
-    'examples/jsm/libs/chevrotain.module.min.js',
+    'examples/jsm/libs/fflate.module.js',
     'examples/jsm/utils/BufferGeometryUtils.js',
     'examples/jsm/utils/SkeletonUtils.js',
 ];

@@ -89,7 +89,7 @@ class Picker(Agent):
             self.face(fruit.position.x, fruit.position.z)
             self.grasp(fruit.id)
         elif not self.walking:
-            self.move_to(fruit.position.x, fruit.position.z)
+            self.approach(fruit)
 
 
 def test_an_agent_subclass_plays_a_whole_lockstep_game_and_collects_fruit():
@@ -101,3 +101,17 @@ def test_an_agent_subclass_plays_a_whole_lockstep_game_and_collects_fruit():
         server.stop()
     assert isinstance(over, GameOver)
     assert over.ranking[0].agent == "Picker" and over.ranking[0].fruit >= 1, over
+
+
+def test_a_fruit_the_agent_cannot_walk_to_is_given_up_for_another():
+    from orchard_world.server import ServerProcess
+    # In this world the fruit nearest to where the agent stands lies on a table, beyond reach from
+    # its edge: walking to it is refused, again and again, unless the agent gives it up.
+    server = ServerProcess(seed=127382042804051, time_limit=10.0, wait_for=1)
+    picker = Picker("Picker")
+    try:
+        over = picker.run("127.0.0.1", server.port)
+    finally:
+        server.stop()
+    assert picker.out_of_reach, "the fruit on the table"
+    assert over.ranking[0].fruit >= 1, over

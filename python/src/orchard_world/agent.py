@@ -1,19 +1,20 @@
 """The base class of an agent, with the shape of the Java ``AgentController``.
 
-Subclass it, decide in :meth:`Agent.decide`, act with :meth:`move_to`, :meth:`face`,
-:meth:`grasp` and :meth:`say`; :meth:`run` does the rest (handshake, registration, perceptions,
-lockstep turns) and returns the game's end::
+Subclass it, decide in :meth:`Agent.decide`, act with :meth:`move_to`, :meth:`approach`,
+:meth:`face`, :meth:`grasp` and :meth:`say`; :meth:`run` does the rest (handshake, registration,
+perceptions, lockstep turns) and returns the game's end::
 
     class Picker(Agent):
         def decide(self, seen):
             fruit = self.nearest_fruit(seen)
             if fruit is None:
-                self.wander()
+                if not self.walking:
+                    self.wander()
             elif self.can_grasp(fruit):
                 self.face(fruit.position.x, fruit.position.z)
                 self.grasp(fruit.id)
             elif not self.walking:
-                self.move_to(fruit.position.x, fruit.position.z)
+                self.approach(fruit)
 
     Picker("Picker").run("localhost", 7557)
 """
@@ -22,7 +23,7 @@ from __future__ import annotations
 import math
 import random
 import sys
-from typing import List, Optional
+from typing import List, Optional, Set
 
 from .client import DEFAULT_PORT, Connection
 from .errors import ServerError
@@ -56,6 +57,9 @@ class Agent:
         self.body_in_force: Optional[Body] = None
         self.latest: Optional[LeanPerception] = None
         self._walk_ends = -1.0
+        self._approaching: Optional[str] = None
+        self.out_of_reach: Set[str] = set()
+        """Fruit whose approach was refused (a tree, a table, the river in the way): nearest_fruit skips them."""
         self._outbox: List[ClientMessage] = []
         self._stopped = False
 
@@ -104,9 +108,24 @@ class Agent:
 
     def move_to(self, x: float, z: float) -> None:
         """Walks straight to (x, z) at the body's top speed."""
+        self._approaching = None
         speed = self.body_in_force.max_speed if self.body_in_force else 1.0
         self._outbox.append(Move(self.name, Point2(x, z)))
         self._walk_ends = self.time + math.hypot(x - self.position.x, z - self.position.z) / speed
+
+    def approach(self, fruit: PerceivedFruit) -> None:
+        """Walks straight towards ``fruit`` until it is in the gripper's reach.
+
+        When the way is blocked (the server refuses the move: the fruit lies on a table or in a
+        tree beyond reach, or behind one), the fruit goes into :attr:`out_of_reach`.
+        """
+        body = self.body_in_force or self.body()
+        dx, dz = fruit.position.x - self.position.x, fruit.position.z - self.position.z
+        distance = math.hypot(dx, dz)
+        short = min(distance, (body.radius + body.gripper.reach + fruit.radius) * 0.8)
+        scale = (distance - short) / distance if distance > 0 else 0.0
+        self.move_to(self.position.x + dx * scale, self.position.z + dz * scale)
+        self._approaching = fruit.id
 
     def turn_to(self, heading: float) -> None:
         """Turns to ``heading`` (radians; 0 north, positive to the left)."""
@@ -143,9 +162,10 @@ class Agent:
         return self.time < self._walk_ends
 
     def nearest_fruit(self, seen: LeanPerception) -> Optional[PerceivedFruit]:
-        """The nearest fruit in view at a height the gripper reaches, or None."""
+        """The nearest fruit in view at a height the gripper reaches, and not out of reach, or None."""
         body = self.body_in_force or self.body()
-        fruit = [f for f in seen.fruit if body.gripper.min_height <= f.position.y <= body.gripper.max_height]
+        fruit = [f for f in seen.fruit if body.gripper.min_height <= f.position.y <= body.gripper.max_height
+                 and f.id not in self.out_of_reach]
         return min(fruit, key=lambda f: (math.hypot(f.position.x - self.position.x, f.position.z - self.position.z),
                                          f.id), default=None)
 
@@ -201,6 +221,8 @@ class Agent:
                 elif isinstance(m, ActionResult) and m.agent == self.name:
                     if m.action == "Move" and m.outcome != "accepted":
                         self._walk_ends = self.time + m.duration
+                        if m.outcome == "rejected" and self._approaching is not None:
+                            self.out_of_reach.add(self._approaching)
                     self.on_action_result(m)
                 elif isinstance(m, GraspResult) and m.agent == self.name:
                     self.points += m.points

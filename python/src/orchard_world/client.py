@@ -100,13 +100,16 @@ class Connection:
         self._write(encode(message, self._seq))
         return self._seq
 
-    def send_all(self, messages: Sequence[ClientMessage]) -> None:
-        """Sends several messages in one write, each with the next seq."""
+    def send_all(self, messages: Sequence[ClientMessage]) -> List[int]:
+        """Sends several messages in one write, each with the next seq; their seqs."""
         lines = []
+        seqs = []
         for message in messages:
             self._seq += 1
             lines.append(encode(message, self._seq))
+            seqs.append(self._seq)
         self._write(b"".join(lines))
+        return seqs
 
     def _write(self, data: bytes) -> None:
         try:
@@ -134,7 +137,11 @@ class Connection:
 
         Lines that come before the reply are kept, in order, for :meth:`receive`.
         """
-        return self._reply(self.send(message))
+        return self.reply(self.send(message))
+
+    def reply(self, seq: int) -> ServerMessage:
+        """Waits for the reply to the message sent with ``seq``, as :meth:`request` does."""
+        return self._reply(seq)
 
     def _reply(self, seq: int) -> ServerMessage:
         while True:

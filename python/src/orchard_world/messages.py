@@ -298,12 +298,23 @@ class Say:
 
 @dataclass(frozen=True)
 class GameControl:
+    """The operator's command: ``start``, ``pause``, ``resume``, or ``restart`` with an optional ``seed``."""
     command: str
+    seed: Optional[int] = None
 
     def to_wire(self, seq: int) -> Dict[str, Any]:
-        if self.command not in ("start", "pause", "resume"):
-            raise ValueError(f"GameControl.command must be one of 'start', 'pause', 'resume', was {self.command!r}")
-        return {"type": "GameControl", "seq": seq, "command": self.command}
+        if self.command not in ("start", "pause", "resume", "restart"):
+            raise ValueError("GameControl.command must be one of 'start', 'pause', 'resume', 'restart', was "
+                             f"{self.command!r}")
+        wire: Dict[str, Any] = {"type": "GameControl", "seq": seq, "command": self.command}
+        if self.seed is not None:
+            if self.command != "restart":
+                raise ValueError(f"GameControl.seed goes only with the command 'restart', was given with "
+                                 f"{self.command!r}")
+            if isinstance(self.seed, bool) or not isinstance(self.seed, int) or not -2 ** 63 <= self.seed < 2 ** 63:
+                raise ValueError(f"GameControl.seed must be a 64-bit whole number, was {self.seed!r}")
+            wire["seed"] = self.seed
+        return wire
 
 
 @dataclass(frozen=True)
@@ -448,6 +459,13 @@ class GameOver:
 
 
 @dataclass(frozen=True)
+class NewGame:
+    """The operator restarted the game: a new one waits for agents at tick 0 (protocol 8.14)."""
+    tick: int
+    time_limit: float
+
+
+@dataclass(frozen=True)
 class AgentRemoved:
     tick: int
     agent: str
@@ -534,7 +552,7 @@ class Unknown:
 
 ServerMessage = Union[Welcome, Error, Registered, ActionResult, GraspResult, Perception, LandmarkPerception,
                       CastlePerception, LeanPerception, FruitEaten, Tick, GameStarted, ScoreUpdate, GameOver,
-                      AgentRemoved, Instruction, Say, WorldSnapshot, AgentAdded, AgentMoved, AgentRotated,
+                      AgentRemoved, NewGame, Instruction, Say, WorldSnapshot, AgentAdded, AgentMoved, AgentRotated,
                       FruitRemoved, Unknown]
 
 
@@ -681,6 +699,7 @@ _DECODERS: Dict[str, Callable[[_Fields], ServerMessage]] = {
     "ScoreUpdate": lambda f: ScoreUpdate(f.req("tick"), _scores(f.req("scores"))),
     "GameOver": lambda f: GameOver(f.req("tick"), f.req("reason"), _scores(f.req("ranking"))),
     "AgentRemoved": lambda f: AgentRemoved(f.req("tick"), f.req("agent"), f.req("reason")),
+    "NewGame": lambda f: NewGame(f.req("tick"), float(f.req("timeLimit"))),
     "Instruction": lambda f: Instruction(f.req("agent"), f.req("text"), f.opt("from")),
     "Say": lambda f: Say(f.req("agent"), f.req("text")),
     "WorldSnapshot": _snapshot,

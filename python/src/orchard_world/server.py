@@ -20,7 +20,7 @@ import subprocess
 import sys
 import threading
 from pathlib import Path
-from typing import Deque, List, Optional, Sequence
+from typing import Deque, Dict, List, Optional, Sequence
 
 from .errors import ServerStartError
 
@@ -73,13 +73,15 @@ def _die_with_parent() -> None:
 class _JavaProcess:
     """A launcher command in a JVM of its own, its output kept (the last lines) for error messages."""
 
-    def __init__(self, args: Sequence[str], java: str = "java", java_options: Sequence[str] = ()) -> None:
+    def __init__(self, args: Sequence[str], java: str = "java", java_options: Sequence[str] = (),
+                 environment: Optional[Dict[str, str]] = None) -> None:
         command = [java, *java_options, "-cp", java_classpath(), LAUNCHER, *args]
         self.command = command
         try:
             self.process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
                                             stderr=subprocess.STDOUT, preexec_fn=_die_with_parent,
-                                            close_fds=True)
+                                            close_fds=True, env=None if environment is None
+                                            else {**os.environ, **environment})
         except FileNotFoundError:
             raise ServerStartError(f"cannot run {java!r}: Orchard needs a JDK 17 or newer as java on the PATH, "
                                    "or JAVA_HOME") from None
@@ -120,16 +122,24 @@ class _JavaProcess:
 
 
 class ServerProcess(_JavaProcess):
-    """``orchard server`` on a free port, stopped with its input; ``port`` once it listens."""
+    """``orchard server`` on a free port, stopped with its input; ``port`` once it listens.
+
+    With ``operator_token`` (handed over in the environment, out of sight of ``ps``) a client that
+    presents it controls the game; with ``keep_serving`` the server stays once a game is over, and
+    the operator's restart (``GameControl restart``) starts the next game on it.
+    """
 
     def __init__(self, *, seed: int, clock: str = "lockstep", time_limit: float = 60.0, wait_for: int = 0,
                  turn_deadline: float = 60.0, tick_rate: int = 20, extra: Sequence[str] = (),
                  java: str = "java", java_options: Sequence[str] = JAVA_OPTIONS,
-                 start_timeout: float = 60.0) -> None:
+                 start_timeout: float = 60.0, operator_token: Optional[str] = None,
+                 keep_serving: bool = False) -> None:
         args = ["server", "--port", "0", "--seed", str(seed), "--clock", clock, "--time-limit", repr(float(time_limit)),
                 "--wait-for", str(wait_for), "--turn-deadline", repr(float(turn_deadline)),
-                "--tick-rate", str(tick_rate), "--quiet", "--stop-on-stdin-close", *extra]
-        super().__init__(args, java, java_options)
+                "--tick-rate", str(tick_rate), "--quiet", "--stop-on-stdin-close",
+                *(["--keep-serving"] if keep_serving else []), *extra]
+        super().__init__(args, java, java_options,
+                         None if operator_token is None else {"ORCHARD_OPERATOR_TOKEN": operator_token})
         self._reader.start()
         if not self._listening.wait(start_timeout) or self._port is None:
             self.stop()
@@ -141,10 +151,17 @@ class ServerProcess(_JavaProcess):
         assert self._port is not None
         return self._port
 
+    def alive(self) -> bool:
+        """Whether the server still runs."""
+        return self.process.poll() is None
+
 
 def start_opponents(port: int, species: Sequence[str], tokens_file: str, java: str = "java",
-                    java_options: Sequence[str] = JAVA_OPTIONS) -> List[_JavaProcess]:
-    """The paper's agents named in ``species`` playing on ``port``: all five in one JVM, else one each."""
+                    java_options: Sequence[str] = JAVA_OPTIONS, next_games: bool = False) -> List[_JavaProcess]:
+    """The paper's agents named in ``species`` playing on ``port``: all five in one JVM, else one each.
+
+    With ``next_games`` they stay for each game the server's operator restarts, and play it anew.
+    """
     unknown = [s for s in species if s not in SPECIES]
     if unknown:
         raise ValueError(f"opponents must be among {', '.join(SPECIES)}, was {unknown[0]!r}")
@@ -156,7 +173,7 @@ def start_opponents(port: int, species: Sequence[str], tokens_file: str, java: s
         commands = [["agent", "--type", s, "--port", str(port), "--resume-tokens", tokens_file] for s in species]
     started = []
     for args in commands:
-        process = _JavaProcess(args, java, java_options)
+        process = _JavaProcess([*args, "--next-games"] if next_games else args, java, java_options)
         process._reader.start()
         started.append(process)
     return started

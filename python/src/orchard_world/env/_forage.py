@@ -23,7 +23,7 @@ class ForageEnv(gym.Env):  # type: ignore[misc]
     episode ends (terminated) when the fruit is gone, or is truncated at ``time_limit``. Options:
     ``opponents`` (default the paper's five), ``time_limit`` (60), ``ticks_per_step`` (2),
     ``turn_angle``, ``body``, ``render_mode`` (``"rgb_array"``), ``render_size``, ``server``,
-    ``turn_deadline``, ``java``, ``java_options``.
+    ``operator_token``, ``turn_deadline``, ``java``, ``java_options``.
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
@@ -31,11 +31,13 @@ class ForageEnv(gym.Env):  # type: ignore[misc]
     def __init__(self, opponents: Sequence[str] = SPECIES, time_limit: float = 60.0, ticks_per_step: int = 2,
                  turn_angle: float = math.pi / 8, body: Optional[Body] = None, render_mode: Optional[str] = None,
                  render_size: int = 256, server: Optional[str] = None, turn_deadline: float = 60.0,
-                 java: str = "java", java_options: Sequence[str] = JAVA_OPTIONS) -> None:
+                 java: str = "java", java_options: Sequence[str] = JAVA_OPTIONS,
+                 operator_token: Optional[str] = None) -> None:
         self._env = OrchardParallelEnv(names=[LEARNER], opponents=opponents, time_limit=time_limit,
                                        ticks_per_step=ticks_per_step, turn_angle=turn_angle, body=body,
                                        render_mode=render_mode, render_size=render_size, server=server,
-                                       turn_deadline=turn_deadline, java=java, java_options=java_options)
+                                       turn_deadline=turn_deadline, java=java, java_options=java_options,
+                                       operator_token=operator_token)
         self.observation_space = _observe.observation_space()
         self.action_space = _observe.action_space()
         self.render_mode = render_mode

@@ -11,10 +11,11 @@ from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Sequence
 
 from ..client import Connection
-from ..errors import ConnectionClosed, ServerError
+from ..errors import ConnectionClosed, OrchardError, ServerError
 from ..messages import (ActionResult, AgentAdded, AgentMoved, AgentRotated, Body, ClientMessage, EndTurn, Error,
-                        FruitRemoved, FruitState, GameOver, GraspRequest, GraspResult, LeanPerception, Move, Point2,
-                        PerceptionRequest, Register, Registered, ScoreUpdate, SetRotation, Tick, WorldSnapshot)
+                        FruitRemoved, FruitState, GameControl, GameOver, GraspRequest, GraspResult, LeanPerception,
+                        Move, NewGame, Point2, PerceptionRequest, Register, Registered, ScoreUpdate, SetRotation,
+                        Tick, WorldSnapshot)
 from . import _observe
 
 AGENTS_PER_CONNECTION = 8
@@ -48,7 +49,7 @@ class WorldView:
 
 class Game:
     def __init__(self, host: str, port: int, names: Sequence[str], body: Body, ticks_per_step: int,
-                 turn_angle: float, view: bool) -> None:
+                 turn_angle: float, view: bool, operator_token: Optional[str] = None) -> None:
         self.ticks_per_step = ticks_per_step
         self.turn_angle = turn_angle
         self.learners: Dict[str, Learner] = {n: Learner(n, body) for n in names}
@@ -64,7 +65,10 @@ class Game:
                 self.viewer = Connection.open(host, port, role="viewer", client="orchard_world-render", reads=())
             for start in range(0, len(names), AGENTS_PER_CONNECTION):
                 chunk = list(names[start:start + AGENTS_PER_CONNECTION])
-                self.groups.append(_Group(Connection.open(host, port, client="orchard_world-env"), chunk))
+                # The first connection is the operator's, which restarts the game for the next reset.
+                token = operator_token if not self.groups else None
+                self.groups.append(_Group(Connection.open(host, port, client="orchard_world-env",
+                                                          operator_token=token), chunk))
             welcome = self.groups[0].connection.welcome
             assert welcome is not None
             self.welcome = welcome
@@ -81,6 +85,20 @@ class Game:
         except BaseException:
             self.close()
             raise
+
+    def restart(self, seed: int) -> None:
+        """Asks the server for a new game of the world of ``seed``, ending this one (protocol 11.6).
+
+        The first connection must be the operator's. The tick under way ends with this game's turns,
+        so that the server need not wait for them; returns once the new game waits for its agents.
+        """
+        operator = self.groups[0].connection
+        ending = [] if self.over is not None else [EndTurn(self.tick)]
+        seq = operator.send_all([GameControl("restart", seed), *ending])[0]
+        for g in self.groups[1:]:
+            if ending:
+                g.connection.send_all(ending)
+        await_new_game(operator, seq)
 
     @property
     def time_limit(self) -> float:
@@ -200,6 +218,26 @@ class Game:
         self.viewer = None
 
 
+def await_new_game(connection: Connection, seq: int) -> None:
+    """Waits for the server's answer to the restart sent with ``seq``, then for its NewGame."""
+    reply = connection.reply(seq)
+    if isinstance(reply, ActionResult) and reply.outcome != "accepted":
+        raise OrchardError(f"the server at {connection.where} did not restart its game: {reply.reason}")
+    while True:
+        m = connection.receive()
+        if m is None:
+            raise ConnectionClosed(f"the server at {connection.where} closed the connection before its new game")
+        if isinstance(m, NewGame):
+            return
+
+
+def restart(host: str, port: int, operator_token: str, seed: int) -> None:
+    """Restarts the game of the server at host:port as its operator, with a connection of its own."""
+    with Connection.open(host, port, client="orchard_world-reset", operator_token=operator_token,
+                         reads=()) as operator:
+        await_new_game(operator, operator.send(GameControl("restart", seed)))
+
+
 def check_options(**values: object) -> None:
     """Raises a ValueError naming the first option out of its range."""
     rules = {
@@ -212,4 +250,4 @@ def check_options(**values: object) -> None:
             raise ValueError(f"{name} must be a number from {low} to {high}, was {value!r}")
 
 
-__all__ = ["Game", "Learner", "check_options"]
+__all__ = ["Game", "Learner", "check_options", "restart"]

@@ -4,6 +4,7 @@ from __future__ import annotations
 import functools
 import math
 import os
+import secrets
 import tempfile
 from typing import Any, Dict, List, Optional, Sequence, Tuple
 
@@ -12,17 +13,22 @@ from gymnasium import spaces
 from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
+from ..errors import OrchardError
 from ..messages import Body, check_name
 from ..server import JAVA_OPTIONS, SPECIES, ServerProcess, start_opponents
 from . import _observe, _render
 from ._game import Game, check_options
+from ._game import restart as _restart_server
 
 
 class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
     """Learning agents collecting fruit in an Orchard world, all acting at once.
 
-    Each ``reset(seed=...)`` starts a fresh lockstep game on a new server (or joins the game of
-    ``server="host:port"``); each ``step(actions)`` is ``ticks_per_step`` ticks of it. Options:
+    The first ``reset(seed=...)`` starts a server with a lockstep game of that seed (and the
+    opponents); each later one has the server restart its game with the new seed, on the same
+    server and the same opponents' processes. With ``server="host:port"`` it plays on a running
+    server instead, restarting its game when given the server's ``operator_token``. Each
+    ``step(actions)`` is ``ticks_per_step`` ticks. Options:
 
     - ``agents``: how many learning agents (default 2), named ``learner_0``...; or ``names``;
     - ``opponents``: the paper's agents that play too, any of ``Dwarf``, ``Robot``, ``Bunny``,
@@ -33,6 +39,8 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
     - ``body``: the learners' :class:`~orchard_world.messages.Body`;
     - ``render_mode``: ``"rgb_array"`` or None; ``render_size``: the frame's side in pixels (256);
     - ``server``: ``"host:port"`` of a running lockstep server to play on, instead of starting one;
+      ``operator_token``: its operator token, with which each reset restarts its game (without
+      it, the env plays the server's game as it is, once);
     - ``turn_deadline``: seconds a tick waits for a slow agent (default 60); ``java``: the java
       command, ``java_options``: its options (quick to start; without ``-XX:TieredStopAtLevel=1``
       a long game runs faster).
@@ -45,7 +53,7 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
                  time_limit: float = 60.0, ticks_per_step: int = 2, turn_angle: float = math.pi / 8,
                  body: Optional[Body] = None, render_mode: Optional[str] = None, render_size: int = 256,
                  server: Optional[str] = None, turn_deadline: float = 60.0, java: str = "java",
-                 java_options: Sequence[str] = JAVA_OPTIONS) -> None:
+                 java_options: Sequence[str] = JAVA_OPTIONS, operator_token: Optional[str] = None) -> None:
         if names is None:
             check_options(agents=agents)
             names = [f"learner_{i}" for i in range(agents)]
@@ -63,6 +71,10 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode must be 'rgb_array' or None, was {render_mode!r}")
         self.address: Optional[Tuple[str, int]] = None
+        if operator_token is not None and (server is None or not isinstance(operator_token, str)
+                                           or not operator_token):
+            raise ValueError(f"operator_token goes with server='host:port', the running server whose token it is, "
+                             f"and must be a non-empty string; was {operator_token!r} with server={server!r}")
         if server is not None:
             host, _, port = server.rpartition(":")
             if not host or not port.isdigit():
@@ -85,6 +97,9 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
         self._server: Optional[ServerProcess] = None
         self._opponents: list = []
         self._game: Optional[Game] = None
+        # The operator's token of the server this env starts: its resets restart that server's game.
+        self._operator_token = operator_token if server is not None else secrets.token_hex(16)
+        self._played = False
         self._tokens = tempfile.NamedTemporaryFile(prefix="orchard-resume-tokens-", delete=False)
         self._tokens.close()
         self._cache: Dict[str, Any] = {}
@@ -107,22 +122,47 @@ class OrchardParallelEnv(ParallelEnv):  # type: ignore[misc]
             self.world_seed = int(seed)
         else:
             self.world_seed = int(self._np_random.integers(1, 2 ** 31))
-        self._end_game()
-        if self.address is None:
+        started = self._server is not None and self._server.alive() and all(
+            o.process.poll() is None for o in self._opponents)
+        if self.address is None and not started:  # none yet, or one of its processes ended: anew
+            self._end_game()
             self._server = ServerProcess(seed=self.world_seed, time_limit=self.time_limit,
                                          wait_for=len(self.possible_agents) + len(self.opponents),
                                          turn_deadline=self.turn_deadline, java=self.java,
-                                         java_options=self.java_options)
+                                         java_options=self.java_options, operator_token=self._operator_token,
+                                         keep_serving=True)
             host, port = "127.0.0.1", self._server.port
             self._opponents = start_opponents(port, self.opponents, self._tokens.name, java=self.java,
-                                              java_options=self.java_options)
+                                              java_options=self.java_options, next_games=True)
         else:
-            host, port = self.address
+            if self.address is not None:
+                host, port = self.address
+            else:
+                assert self._server is not None
+                host, port = "127.0.0.1", self._server.port
+            self._restart(host, port, self.world_seed)
         self._cache.clear()
         self._game = Game(host, port, self.possible_agents, self.body, self.ticks_per_step, self.turn_angle,
-                          view=self.render_mode == "rgb_array")
+                          view=self.render_mode == "rgb_array", operator_token=self._operator_token)
+        self._played = True
         self.agents = list(self.possible_agents)
         return {a: self._observe(a) for a in self.agents}, {a: self._info(a) for a in self.agents}
+
+    def _restart(self, host: str, port: int, seed: int) -> None:
+        """A new game of ``seed`` on the server, as its operator; none without its token, after a first game."""
+        game, self._game = self._game, None
+        try:
+            if self._operator_token is None:
+                if self._played:
+                    raise OrchardError(f"the server at {host}:{port} plays one game: give the env its operator "
+                                       "token (operator_token=...) to reset it, or let the env start its own server")
+            elif game is not None and game.groups:
+                game.restart(seed)
+            else:
+                _restart_server(host, port, self._operator_token, seed)
+        finally:
+            if game is not None:
+                game.close()
 
     def step(self, actions: Dict[str, Any]) -> Tuple[Dict[str, np.ndarray], Dict[str, float], Dict[str, bool],
                                                      Dict[str, bool], Dict[str, dict]]:

@@ -1,56 +1,50 @@
-// The agents: each a model (its registered glTF or glb with its animations, its VRML97, or a
-// figure in its colour) standing on the ground, walking the moves the server tells, turning to its
-// heading and turning its registered joints.
+// The agents: each its model (models/: glTF and glb with their clips, X3D and VRML97 with their
+// event graphs, the bundled figures, or a placeholder in its colour), walking the moves the server
+// tells, turning to its heading, turning its registered joints and playing its animations, on the
+// game's simulated clock. Where each agent is and which way it faces is kept apart from the
+// models, as the protocol says it, for following an agent and for what it sees.
 import * as THREE from './vendor/three/build/three.module.js';
-import { GLTFLoader } from './vendor/three/examples/jsm/loaders/GLTFLoader.js';
-import { VRMLLoader } from './vendor/three/examples/jsm/loaders/VRMLLoader.js';
+import { loadModel } from './models/index.js';
+import { quaternion } from './models/events.js';
 
 const PALETTE = [0xe6194b, 0x4363d8, 0xf58231, 0x911eb4, 0x42d4f4, 0xf032e6, 0xffffff, 0x000075, 0x9a6324,
     0x800000];
 
-function bytes(base64) {
-    const text = atob(base64);
-    const out = new Uint8Array(text.length);
-    for (let i = 0; i < text.length; i++) {
-        out[i] = text.charCodeAt(i);
-    }
-    return out;
+const vector = p => new THREE.Vector3(p.x, p.y ?? 0, p.z);
+
+function rotation(r) {
+    return quaternion([r.axis.x, r.axis.y, r.axis.z, r.angle]);
 }
 
-/** A figure the size of the agent's body, its nose to the front: bundled and X3D models, for now. */
-function figure(body, colour) {
-    const group = new THREE.Group();
-    const paint = new THREE.MeshLambertMaterial({ color: colour });
-    const radius = body.radius;
-    const torso = new THREE.Mesh(new THREE.CylinderGeometry(radius * 0.8, radius, body.height * 0.75, 16), paint);
-    torso.position.y = body.height * 0.375;
-    const head = new THREE.Mesh(new THREE.SphereGeometry(radius * 0.7, 16, 12), paint);
-    head.position.y = body.height * 0.75 + radius * 0.5;
-    const nose = new THREE.Mesh(new THREE.ConeGeometry(radius * 0.25, radius * 0.8, 8),
-        new THREE.MeshLambertMaterial({ color: 0x222222 }));
-    // The model's front is -z, north, as heading 0 faces.
-    nose.rotation.x = -Math.PI / 2;
-    nose.position.set(0, head.position.y, -radius * 0.9);
-    group.add(torso, head, nose);
-    return group;
-}
-
-async function load(model, body, colour) {
-    const format = model?.format;
-    try {
-        if (format === 'gltf' || format === 'glb') {
-            const data = bytes(model.data);
-            const gltf = await new GLTFLoader().parseAsync(format === 'glb' ? data.buffer
-                : new TextDecoder().decode(data), '');
-            return { object: gltf.scene, clips: gltf.animations };
-        }
-        if (format === 'vrml97') {
-            return { object: new VRMLLoader().parse(new TextDecoder().decode(bytes(model.data)), ''), clips: [] };
-        }
-    } catch (e) {
-        console.warn(`model of format ${format} could not be read, drawing a figure instead:`, e);
+/** One agent as the protocol tells it: body, where it walks, its heading; and its model. */
+class Agent {
+    constructor(state, colour) {
+        this.name = state.name;
+        this.body = state.body;
+        this.colour = colour;
+        this.heading = state.heading;
+        this.move = { from: vector(state.position), to: vector(state.position), start: 0, duration: 0 };
+        this.root = new THREE.Group();
+        this.root.name = `agent ${state.name}`;
+        this.model = null;
+        this.waiting = [];
     }
-    return { object: figure(body, colour), clips: [] };
+
+    /** Tells its model now, or once it is loaded: joints and animations heard while it loads are not lost. */
+    tell(change) {
+        if (this.model) {
+            change(this.model.rig);
+        } else {
+            this.waiting.push(change);
+        }
+    }
+
+    /** Where it is at simulated time `time`: along its last move. */
+    positionAt(time) {
+        const m = this.move;
+        const f = m.duration > 0 ? Math.min(1, Math.max(0, (time - m.start) / m.duration)) : 1;
+        return m.from.clone().lerp(m.to, f);
+    }
 }
 
 export class Agents {
@@ -58,27 +52,28 @@ export class Agents {
         this.scene = scene;
         this.byName = new Map();
         this.count = 0;
+        this.now = 0;
     }
 
     async add(state) {
         this.remove(state.name);
-        const colour = PALETTE[this.count++ % PALETTE.length];
-        const root = new THREE.Group();
-        root.name = state.name;
-        root.position.set(state.position.x, state.position.y ?? 0, state.position.z);
-        root.rotation.y = state.heading;
-        const agent = { name: state.name, colour, root, body: state.body, move: null, mixer: null, actions: new Map() };
+        const agent = new Agent(state, PALETTE[this.count++ % PALETTE.length]);
         this.byName.set(state.name, agent);
-        this.scene.add(root);
-        const { object, clips } = await load(state.model, state.body, colour);
+        this.scene.add(agent.root);
+        const model = await loadModel(state, agent.colour);
         if (this.byName.get(state.name) !== agent) {
             return agent;
         }
-        root.add(object);
-        if (clips.length > 0) {
-            agent.mixer = new THREE.AnimationMixer(object);
-            clips.forEach(clip => agent.actions.set(clip.name, agent.mixer.clipAction(clip)));
+        agent.model = model;
+        agent.root.add(model.object);
+        const at = agent.positionAt(this.now);
+        model.rig.moveTo(at, at, this.now, 0);
+        model.rig.setRotation(rotation({ axis: { x: 0, y: 1, z: 0 }, angle: agent.heading }));
+        // A move heard while the model loaded.
+        if (agent.move.duration > 0) {
+            model.rig.moveTo(agent.move.from, agent.move.to, agent.move.start, agent.move.duration);
         }
+        agent.waiting.splice(0).forEach(change => change(model.rig));
         return agent;
     }
 
@@ -87,13 +82,19 @@ export class Agents {
         if (agent) {
             this.scene.remove(agent.root);
             this.byName.delete(name);
+            // Its geometries and materials are its own: their GPU buffers go with it.
+            agent.root.traverse(object => {
+                object.geometry?.dispose();
+                [object.material].flat().forEach(material => material?.dispose());
+            });
         }
     }
 
     moved(m) {
         const agent = this.byName.get(m.agent);
         if (agent) {
-            agent.move = { from: m.from, to: m.to, start: m.startTime, duration: m.duration };
+            agent.move = { from: vector(m.from), to: vector(m.to), start: m.startTime, duration: m.duration };
+            agent.model?.rig.moveTo(agent.move.from, agent.move.to, m.startTime, m.duration);
         }
     }
 
@@ -101,39 +102,28 @@ export class Agents {
         const agent = this.byName.get(m.agent);
         if (agent) {
             const a = m.rotation.axis;
-            agent.root.quaternion.setFromAxisAngle(new THREE.Vector3(a.x, a.y, a.z).normalize(), m.rotation.angle);
+            // A turn about the up axis is a heading; any other orientation keeps the heading it had.
+            if (Math.abs(a.x) < 1e-9 && Math.abs(a.z) < 1e-9 && a.y !== 0) {
+                agent.heading = Math.sign(a.y) * m.rotation.angle;
+            }
+            agent.tell(rig => rig.setRotation(rotation(m.rotation)));
         }
     }
 
     jointRotated(m) {
-        const joint = this.byName.get(m.agent)?.root.getObjectByName(m.joint);
-        if (joint) {
-            const a = m.rotation.axis;
-            joint.quaternion.setFromAxisAngle(new THREE.Vector3(a.x, a.y, a.z).normalize(), m.rotation.angle);
-        }
+        this.byName.get(m.agent)?.tell(rig => rig.setJoint(m.joint, rotation(m.rotation)));
     }
 
     animation(m, start) {
-        const action = this.byName.get(m.agent)?.actions.get(m.timeSensor);
-        if (action) {
-            if (start) {
-                action.setLoop(m.loop ? THREE.LoopRepeat : THREE.LoopOnce, Infinity).reset().play();
-            } else {
-                action.stop();
-            }
-        }
+        const now = this.now;
+        this.byName.get(m.agent)?.tell(rig => rig.animation(m.timeSensor, start, m.loop, now));
     }
 
-    /** Places every agent where its move has it at simulated time {@code time}; plays animations. */
-    update(time, seconds) {
+    /** Moves every model to simulated time `time`: walks, event graphs, clips. */
+    update(time) {
+        this.now = time;
         for (const agent of this.byName.values()) {
-            const m = agent.move;
-            if (m) {
-                const f = m.duration > 0 ? Math.min(1, Math.max(0, (time - m.start) / m.duration)) : 1;
-                agent.root.position.set(m.from.x + (m.to.x - m.from.x) * f, m.from.y + (m.to.y - m.from.y) * f,
-                    m.from.z + (m.to.z - m.from.z) * f);
-            }
-            agent.mixer?.update(seconds);
+            agent.model?.rig.update(time);
         }
     }
 }

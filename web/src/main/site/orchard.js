@@ -5,6 +5,7 @@
 import * as THREE from './vendor/three/build/three.module.js';
 import { buildWorld } from './scene.js';
 import { Agents } from './agents.js';
+import { Follow } from './follow.js';
 
 const $ = id => document.getElementById(id);
 const canvas = $('world');
@@ -19,8 +20,9 @@ scene.add(sun);
 const camera = new THREE.PerspectiveCamera(50, 1, 1, 1000);
 
 const agents = new Agents(scene);
+const following = new Follow(scene);
 const state = {
-    socket: null, seq: 0, world: null, fruit: new Map(), bounds: null, phase: 'connecting',
+    socket: null, seq: 0, world: null, snapshot: null, seen: '', fruit: new Map(), bounds: null, phase: 'connecting',
     tickRate: 20, time: 0, timeAt: performance.now(), selected: null, operator: false, ready: false, frames: 0,
 };
 
@@ -42,6 +44,7 @@ function connect(operatorToken, token) {
         agents.remove(name);
     }
     state.ready = false;
+    state.snapshot = null;
     state.operator = Boolean(operatorToken);
     const socket = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/socket`);
     state.socket = socket;
@@ -123,6 +126,7 @@ const handlers = {
     WorldSnapshot(m) {
         const built = buildWorld(m);
         state.world = built.world;
+        state.snapshot = m;
         state.fruit = built.fruit;
         scene.add(state.world);
         setTime(m.time);
@@ -200,18 +204,38 @@ function aim() {
     camera.lookAt(cx, 0, cz + span * 0.02);
 }
 
-function follow() {
+/** What the fruit still there is, for what an agent sees. */
+function fruitList() {
+    return [...state.fruit.values()].map(mesh => ({ id: mesh.name, kind: mesh.userData.kind, position: mesh.position }));
+}
+
+/** The followed agent's cone and what it perceives, the camera behind it; false when none is followed. */
+function follow(time) {
     const agent = agents.byName.get(state.selected);
-    if (!$('follow').checked || !agent) {
+    if (!$('follow').checked || !agent || !state.snapshot) {
+        following.clear();
+        showSeen(null);
         return false;
     }
-    // Behind and above the agent, looking the way it faces: (-sin h, 0, -cos h).
-    const facing = new THREE.Vector3(0, 0, -1).applyQuaternion(agent.root.quaternion);
-    const eye = agent.root.position.clone().addScaledVector(facing, -8);
-    eye.y += 5;
-    camera.position.copy(eye);
-    camera.lookAt(agent.root.position.clone().addScaledVector(facing, 6).setY(1));
+    Follow.chase(camera, agent, time);
+    showSeen(following.update(agent, time, state.snapshot, [...agents.byName.values()], fruitList()));
     return true;
+}
+
+/** The panel's list of what the followed agent perceives, rewritten only when it changes. */
+function showSeen(seen) {
+    const lines = seen ? [
+        ...seen.fruit.map(f => `${f.kind ?? 'fruit'} ${f.id}`),
+        ...seen.objects.map(o => `${o.kind} ${o.id} at (${o.position.x.toFixed(0)}, ${o.position.z.toFixed(0)})`),
+        ...seen.agents.map(a => `agent ${a.name}`),
+    ] : [];
+    // Not following differs from following an agent that perceives nothing: the list is hidden.
+    const text = seen ? lines.join('\n') : null;
+    if (text !== state.seen) {
+        state.seen = text;
+        $('seen').replaceChildren(...lines.map(line => Object.assign(document.createElement('li'), { textContent: line })));
+        $('sees').hidden = !seen;
+    }
 }
 
 function resize() {
@@ -225,23 +249,51 @@ function resize() {
     }
 }
 
-let last = performance.now();
+/** The camera: behind the followed agent, where a test put it, or over the whole world. */
+function place(time) {
+    if (!follow(time)) {
+        if (state.view) {
+            const v = state.view;
+            camera.position.set(v[0], v[1], v[2]);
+            camera.lookAt(v[3], v[4], v[5]);
+        } else {
+            aim();
+        }
+    }
+}
+
 function frame(now) {
-    const seconds = (now - last) / 1000;
-    last = now;
     // Simulated time runs on between ticks, never more than two ticks past the last one heard.
     const ahead = state.phase === 'running' ? Math.min((now - state.timeAt) / 1000, 2 / state.tickRate) : 0;
     const time = state.time + ahead;
     $('clock').textContent = `t = ${time.toFixed(1)} s`;
-    agents.update(time, seconds);
+    agents.update(time);
     resize();
-    if (!follow()) {
-        aim();
-    }
+    place(time);
     renderer.render(scene, camera);
     state.frames++;
     requestAnimationFrame(frame);
 }
+
+// Clicking an agent selects it, as in the Java viewer; clicking elsewhere keeps the selection.
+canvas.onclick = event => {
+    const r = canvas.getBoundingClientRect();
+    const pointer = new THREE.Vector2((event.clientX - r.left) / r.width * 2 - 1, 1 - (event.clientY - r.top) / r.height * 2);
+    const raycaster = new THREE.Raycaster();
+    raycaster.setFromCamera(pointer, camera);
+    const roots = [...agents.byName.values()].map(agent => agent.root);
+    const hit = raycaster.intersectObjects(roots, true)[0];
+    if (hit) {
+        let object = hit.object;
+        while (object && !roots.includes(object)) {
+            object = object.parent;
+        }
+        const agent = [...agents.byName.values()].find(a => a.root === object);
+        if (agent) {
+            select(agent.name);
+        }
+    }
+};
 
 $('instruct').onsubmit = event => {
     event.preventDefault();
@@ -268,15 +320,44 @@ window.orchard = {
     get ready() { return state.ready; },
     get phase() { return state.phase; },
     get frames() { return state.frames; },
+    /** The simulated time of the last frame drawn. */
+    get time() { return agents.now; },
     follow(name) {
         select(name);
         $('follow').checked = Boolean(name);
     },
     agents: () => [...agents.byName.keys()],
+    /** Where the page has an agent now, with its heading and body height. */
     position(name) {
-        const p = agents.byName.get(name)?.root.position;
-        const body = agents.byName.get(name)?.body;
-        return p ? { x: p.x, y: p.y, z: p.z, height: body.height } : null;
+        const agent = agents.byName.get(name);
+        const p = agent?.positionAt(agents.now);
+        return p ? { x: p.x, y: p.y, z: p.z, heading: agent.heading, height: agent.body.height } : null;
+    },
+    /** How an agent's model is drawn: its format, or the placeholder and why. */
+    model(name) {
+        const model = agents.byName.get(name)?.model;
+        return model ? { placeholder: Boolean(model.placeholder), reason: model.reason ?? null } : null;
+    },
+    /** What the followed agent perceives, by kind: fruit ids, obstacle positions, agent names. */
+    seen() {
+        const seen = following.seen;
+        return { fruit: seen.fruit.map(f => f.id), objects: seen.objects.map(o => o.id),
+            agents: seen.agents.map(a => a.name) };
+    },
+    /** Shows or hides what following draws (cone, ring, lines), for a test to see where it is drawn. */
+    showFollowing(visible) {
+        following.hidden = !visible;
+        following.group.visible = visible && following.group.visible;
+        renderer.render(scene, camera);
+    },
+    /** A fixed camera at (x, y, z) looking at (tx, ty, tz), as the Java viewer's --camera and --look-at; null for the overview. */
+    view(at) {
+        state.view = at;
+        place(agents.now);
+    },
+    /** Draws the next frame at once, so that a test's screenshot shows the scene as it is now. */
+    draw() {
+        renderer.render(scene, camera);
     },
     /** Shows or hides an agent and draws the next frame at once, so that a test sees where it was drawn. */
     show(name, visible) {

@@ -87,6 +87,7 @@ export function fruitMesh(f) {
     const mesh = new THREE.Mesh(geometry, material(COLOURS[f.kind] ?? 0xffffff));
     mesh.position.set(f.position.x, f.position.y, f.position.z);
     mesh.name = f.id;
+    mesh.userData.kind = f.kind;
     return mesh;
 }
 

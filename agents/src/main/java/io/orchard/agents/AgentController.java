@@ -9,6 +9,7 @@ import io.orchard.agents.errand.Errands;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpreter;
+import io.orchard.agents.language.Language;
 import io.orchard.agents.language.LanguageModel;
 import io.orchard.agents.language.LanguageModelInterpreter;
 import io.orchard.agents.map.WorldMemory;
@@ -59,7 +60,8 @@ public abstract class AgentController {
     private final Situation situation = new Situation();
     private final ControllerMotor motor;
     private final Behaviours behaviours;
-    private volatile @Nullable Interpreter languageModel;
+    private volatile @Nullable LanguageModel languageModel;
+    private volatile @Nullable LanguageModelInterpreter consulting;
     private final GameLoop loop;
 
     /**
@@ -130,6 +132,25 @@ public abstract class AgentController {
      */
     public final void instruct(String text) {
         loop.instruct(Checks.text(text, "instruction"));
+    }
+
+    /**
+     * Stays connected once the game is over, for the next game that the server's operator may start
+     * ({@code GameControl restart}, docs/protocol.md 11.6): {@link #run} then returns the
+     * {@code GameOver} when the server says that game waits ({@link #nextGameWaits()}), or when it
+     * closes the connection. An agent plays one game: a new agent plays the next, as a new run of the
+     * program would. Call before {@code run}.
+     */
+    public final void stayForNextGame() {
+        loop.stayForNextGame();
+    }
+
+    /**
+     * Whether the server started another game after this agent's, for a new agent to play
+     * ({@link #stayForNextGame()}). Safe from any thread.
+     */
+    public final boolean nextGameWaits() {
+        return loop.nextGameWaits();
     }
 
     /** Leaves the game: closes the connection, and {@link #run} returns. Safe from any thread. */
@@ -205,10 +226,12 @@ public abstract class AgentController {
      * by the server. The default reads it with {@link #interpreter()} and hands a goal it
      * understood to {@link #onGoal}; it answers one for another agent ("Guppy, stop" heard by the
      * Robot) with who it was for, reads one it did not understand as the answer to a question it
-     * asked ("the nearer one") when it is one, and otherwise says the interpreter's helpful answer.
+     * asked ("the nearer one") when it is one, and otherwise says the interpreter's helpful answer. The
+     * sentence is read in what the agent spoke about or looked at last ({@link Errands#discourse()}), so
+     * that "that table" is the table it just named.
      */
     protected void onInstruction(String text, @Nullable String from) {
-        behaviours.heard(text, interpreter().interpret(text), this::onGoal);
+        behaviours.heard(text, interpreter().interpret(text, behaviours.discourse()), this::onGoal);
     }
 
     /**
@@ -233,8 +256,17 @@ public abstract class AgentController {
      * English (docs/instructions.md) and is made once; override to plug in another {@link Interpreter}.
      */
     protected Interpreter interpreter() {
-        Interpreter consulting = languageModel;
-        return consulting != null ? consulting : behaviours.interpreter();
+        InstructionInterpreter grammar = behaviours.interpreter();
+        LanguageModel model = languageModel;
+        if (model == null) {
+            return grammar;
+        }
+        LanguageModelInterpreter asking = consulting;
+        if (asking == null || asking.grammar() != grammar) {
+            asking = new LanguageModelInterpreter(grammar, model);
+            consulting = asking;
+        }
+        return asking;
     }
 
     /**
@@ -243,7 +275,18 @@ public abstract class AgentController {
      * understands is read as before, so games with the shipped agents stay reproducible.
      */
     public final void consultLanguageModel(LanguageModel model) {
-        languageModel = new LanguageModelInterpreter(behaviours.interpreter(), model);
+        languageModel = Objects.requireNonNull(model, "model");
+    }
+
+    /**
+     * Has the agent understand {@code language} as well as English ({@link Language#GERMAN}: "geh zum
+     * Schloss", "was siehst du?"), read each sentence in the language it is in, and answer in that
+     * language: what it says back, what it says as it carries the instruction out, and its answers to
+     * questions. English ({@link Language#ENGLISH}) is every agent's and needs no call. Safe from any
+     * thread; {@code ./orchard agent --language de} calls it.
+     */
+    public final void understand(Language language) {
+        behaviours.understand(Objects.requireNonNull(language, "language"));
     }
 
     // ---- what the agent knows ----------------------------------------------------------------

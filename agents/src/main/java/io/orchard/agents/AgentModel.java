@@ -2,6 +2,7 @@ package io.orchard.agents;
 
 import io.orchard.protocol.StrictJson;
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.ModelArchive;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import java.io.IOException;
@@ -34,9 +35,9 @@ import tools.jackson.databind.json.JsonMapper;
  * the names in a glTF file (an unnamed node or clip as {@code node#i} or {@code clip#i}, by its index, as viewers
  * name it), without loading the model.
  *
- * <p>A .gltf whose buffers and textures are files next to it, as modelling tools export it, is sent as one file: each
- * such file is read from the model's own folder among the resources (never from elsewhere, never from the network)
- * and embedded as a {@code data:} URI.
+ * <p>A .gltf whose buffers and textures are files next to it, as modelling tools export it, is sent as a zip of the
+ * model and those files ({@code "format":"zip"}): each is read from the model's own folder among the resources (never
+ * from elsewhere, never from the network).
  *
  * <pre>{@code
  * AgentModel model = AgentModel.load(Dwarf.class, "models/Dwarf.x3d");
@@ -55,6 +56,7 @@ public final class AgentModel {
     private static final JsonMapper INDEX_READER = StrictJson.builder().build();
 
     private final ModelFormat format;
+    private final ModelFormat modelFormat;
     private final byte[] bytes;
     private final String source;
     private final Map<String, String> nodes;
@@ -63,7 +65,9 @@ public final class AgentModel {
         this.format = format;
         this.bytes = bytes;
         this.source = source;
-        this.nodes = Collections.unmodifiableMap(scan(format, bytes));
+        ModelArchive archive = format == ModelFormat.ZIP ? ModelArchive.read(bytes) : null;
+        this.modelFormat = archive == null ? format : archive.modelFormat();
+        this.nodes = Collections.unmodifiableMap(scan(modelFormat, archive == null ? bytes : archive.modelBytes()));
     }
 
     /**
@@ -85,10 +89,9 @@ public final class AgentModel {
                 throw new IOException("model '" + resource + "' has " + data.length + " bytes, at most "
                         + ModelSpec.MAX_MODEL_BYTES + " may be sent");
             }
-            if (format == ModelFormat.GLTF) {
-                data = GltfPacking.packed(owner, resource, data);
-            }
-            return new AgentModel(format, data, resource.substring(resource.lastIndexOf('/') + 1));
+            String source = resource.substring(resource.lastIndexOf('/') + 1);
+            byte[] zip = format == ModelFormat.GLTF ? ModelFolder.zipped(owner, resource, data) : null;
+            return zip == null ? new AgentModel(format, data, source) : new AgentModel(ModelFormat.ZIP, zip, source);
         }
     }
 
@@ -122,7 +125,7 @@ public final class AgentModel {
                 + " .wrl (VRML97), .gltf or .glb (glTF 2.0)");
     }
 
-    /** The model's format. */
+    /** The model's format: {@link ModelFormat#ZIP} for a model sent with its files. */
     public ModelFormat format() {
         return format;
     }
@@ -160,7 +163,7 @@ public final class AgentModel {
      */
     public List<String> problems(String agent, Collection<String> joints, Collection<String> timeSensors) {
         List<String> problems = new ArrayList<>();
-        boolean gltf = format == ModelFormat.GLTF || format == ModelFormat.GLB;
+        boolean gltf = modelFormat == ModelFormat.GLTF || modelFormat == ModelFormat.GLB;
         String root = nodes.get(agent);
         if (root == null) {
             problems.add("no Transform named after the agent: the model has no node " + def(agent));
@@ -222,7 +225,7 @@ public final class AgentModel {
         } else if (format == ModelFormat.GLTF) {
             out = text.replaceAll("(\"name\"\\s*:\\s*\")" + name + "([^\"]*\")", "$1" + Matcher.quoteReplacement(to) + "$2");
         } else {
-            throw new IllegalArgumentException("a binary glTF model (" + source + ") cannot be renamed;"
+            throw new IllegalArgumentException("a binary glTF model or a zip (" + source + ") cannot be renamed;"
                     + " name its root node after the agent");
         }
         return new AgentModel(format, out.getBytes(StandardCharsets.UTF_8), source);

@@ -4,9 +4,11 @@ import io.orchard.agents.behaviour.Forager;
 import io.orchard.agents.behaviour.Motor;
 import io.orchard.agents.behaviour.PathPlanner;
 import io.orchard.agents.errand.Errands;
+import io.orchard.agents.language.Discourse;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
+import io.orchard.agents.language.Language;
 import java.util.List;
 import java.util.function.Consumer;
 import java.util.random.RandomGenerator;
@@ -30,6 +32,7 @@ final class Behaviours {
     private Forager forager;
     private Errands errands;
     private InstructionInterpreter interpreter;
+    private volatile Language language = Language.ENGLISH;
 
     Behaviours(String agent, Situation situation, Motor motor, RandomGenerator random) {
         this.agent = agent;
@@ -38,12 +41,19 @@ final class Behaviours {
         this.random = random;
     }
 
-    /** The default interpreter of instructions, knowing the agent's name. */
+    /** The default interpreter of instructions, knowing the agent's name, in its language and English. */
     InstructionInterpreter interpreter() {
-        if (interpreter == null) {
-            interpreter = new InstructionInterpreter(List.of(agent));
+        InstructionInterpreter made = interpreter;
+        if (made == null || made.languages().get(0) != language) {
+            made = new InstructionInterpreter(List.of(agent), language);
+            interpreter = made;
         }
-        return interpreter;
+        return made;
+    }
+
+    /** Has the agent understand this language besides English; safe from any thread. */
+    void understand(Language own) {
+        this.language = own;
     }
 
     PathPlanner planner() {
@@ -90,11 +100,15 @@ final class Behaviours {
      */
     void heard(String text, Interpretation heard, Consumer<Goal> onGoal) {
         if (!heard.isFor(agent)) {
-            motor.say("That was for " + heard.addressee().orElseThrow() + ", not for me.");
+            motor.say(heard.language() == Language.GERMAN ? "Das war für " + heard.addressee().orElseThrow()
+                    + ", nicht für mich." : "That was for " + heard.addressee().orElseThrow() + ", not for me.");
             return;
         }
+        if (situation.inWorld()) {
+            errands().speak(heard.language()); // the answers, and what it says as it goes, in the sentence's language
+        }
         if (heard instanceof Interpretation.Understood understood) {
-            if (!understood.restatement().equals(understood.goal().restatement())) {
+            if (!understood.restatement().equals(understood.goal().restatement(understood.language()))) {
                 // Read by another interpreter than the grammar (a language model, a student's): what
                 // it made of the sentence is said before the errand announces itself.
                 motor.say(understood.restatement());
@@ -106,6 +120,11 @@ final class Behaviours {
                         : notUnderstood.answer());
             }
         }
+    }
+
+    /** What the agent spoke about or looked at last; nothing before it is in the world. */
+    Discourse discourse() {
+        return situation.inWorld() ? errands().discourse() : Discourse.NONE;
     }
 
     /** Whether an instructed goal has the agent. */

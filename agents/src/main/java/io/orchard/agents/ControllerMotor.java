@@ -18,12 +18,16 @@ import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.Checks;
 import io.orchard.protocol.value.Point2;
 import io.orchard.protocol.value.Rotation;
+import java.util.Optional;
 
 /**
  * The agent's actions, for its controller's methods and, as a {@link Motor}, for its behaviours:
  * each sends the paper's message and notes what it started, the latest move and grasp
  * ({@link MoveTracker}, {@link GraspTracker}), the heading after a turn and the joints posed this
- * tick, which the {@link WalkAnimation} leaves alone.
+ * tick, which the {@link WalkAnimation} leaves alone. It holds every behaviour to the rules a person
+ * set ({@link io.orchard.agents.map.Conduct}): a walk into an area the agent must keep out of ends at
+ * its edge, and a grasp of fruit it must leave is not sent but fails at once, with the rule as the
+ * reason.
  */
 final class ControllerMotor implements Motor {
 
@@ -78,11 +82,15 @@ final class ControllerMotor implements Motor {
         moveTo(to);
     }
 
-    /** Walks straight from where the agent stands to {@code to}. */
+    /** Walks straight from where the agent stands to {@code to}, as far as the rules let it. */
     void moveTo(Point2 to) {
         Point2 from = situation.position();
-        long seq = session.send(s -> new MoveMessage(s, agent, from.at(0), to.at(0)));
-        moves.sent(seq, from, to, turns.tick());
+        if (situation.inWorld()) {
+            to = situation.memory().conduct().cut(from, to);
+        }
+        Point2 end = to;
+        long seq = session.send(s -> new MoveMessage(s, agent, from.at(0), end.at(0)));
+        moves.sent(seq, from, end, turns.tick());
         tally.movesSent++;
     }
 
@@ -117,6 +125,13 @@ final class ControllerMotor implements Motor {
 
     @Override
     public void grasp(String fruitId) {
+        if (situation.inWorld()) {
+            Optional<String> rule = situation.memory().fruit(fruitId).flatMap(situation.memory().conduct()::ruleAgainst);
+            if (rule.isPresent()) {
+                grasps.refused(fruitId, turns.tick(), rule.get());
+                return;
+            }
+        }
         long seq = session.send(s -> new GraspRequestMessage(s, agent, fruitId));
         grasps.sent(seq, fruitId, turns.tick());
         tally.graspsSent++;

@@ -10,6 +10,7 @@ import io.orchard.protocol.message.GraspResultMessage;
 import io.orchard.protocol.message.InstructionMessage;
 import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.MoveMessage;
+import io.orchard.protocol.message.NewGameMessage;
 import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.RegisterJointMessage;
 import io.orchard.protocol.message.RegisterTimeSensorMessage;
@@ -33,7 +34,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The agent's one game as its controller plays it, from connecting to {@code GameOver}, on the
+ * The agent's one game as its controller plays it, from connecting to {@code GameOver} (or to the
+ * {@code NewGame} that follows it, for an agent that stays for the next game), on the
  * thread that called {@link AgentController#run}: it takes what happens one event at a time, keeps
  * the agent's situation, clock and counts up to date, and calls the controller's hooks, each
  * guarded so that a hook that throws is logged and the game goes on.
@@ -54,6 +56,10 @@ final class GameLoop {
     private final AtomicBoolean ran = new AtomicBoolean();
     private final List<Session.Instruction> early = new ArrayList<>();
     private GameOverMessage gameOver;
+    /** Whether to stay connected once the game is over, for the operator's next game. */
+    private volatile boolean stayForNextGame;
+    /** Whether the server said that a next game waits. */
+    private volatile boolean nextGame;
     /** Where the agent's resume token is kept across runs; null when it is not. */
     private volatile ResumeTokens resumeTokens;
 
@@ -113,6 +119,16 @@ final class GameLoop {
         session.stop();
     }
 
+    /** Stays connected once the game is over, until the server says a next game waits or closes. */
+    void stayForNextGame() {
+        stayForNextGame = true;
+    }
+
+    /** Whether the server started a next game after this one. */
+    boolean nextGameWaits() {
+        return nextGame;
+    }
+
     /** Keep-alives after this much silence instead of every 30 s, for a server with a shorter idle rule. */
     void keepAliveEvery(Duration silence) {
         session.keepAliveEvery(silence);
@@ -129,7 +145,7 @@ final class GameLoop {
     }
 
     private GameOverMessage play() throws IOException, InterruptedException {
-        while (gameOver == null) {
+        while (gameOver == null || stayForNextGame && !nextGame) {
             Object event;
             if (turns.open()) {
                 event = session.next(turns.waitMillis());
@@ -205,6 +221,8 @@ final class GameLoop {
             guarded(() -> agent.onError(error));
         } else if (message instanceof GameStartedMessage started) {
             guarded(() -> agent.onGameStarted(started));
+        } else if (message instanceof NewGameMessage) {
+            nextGame = gameOver != null; // the game before is over: it came first
         } else if (message instanceof GameOverMessage over) {
             turns.close();
             tally.scored(name, over.ranking());
@@ -247,6 +265,9 @@ final class GameLoop {
     }
 
     private void tick(TickMessage t) {
+        if (turns.lockstep()) {
+            session.lockstepTicked();
+        }
         if (turns.open()) {
             turn(null); // a tick began before the last one was decided: never leave a turn open
         }

@@ -16,6 +16,12 @@ final class GraspTracker {
         lastSeq = seq;
     }
 
+    /** A grasp of {@code fruitId} was not sent, for this reason: it failed at once. */
+    void refused(String fruitId, long tick, String reason) {
+        last = new GraspStatus(fruitId, tick, true, false, reason);
+        lastSeq = -1;
+    }
+
     /** The latest grasp sent and, once it came, the server's answer; null before the first. */
     @Nullable GraspStatus last() {
         return last;

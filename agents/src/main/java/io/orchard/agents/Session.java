@@ -123,6 +123,11 @@ final class Session {
         }
     }
 
+    /** A tick of a lockstep game began: what the server allows for it may be sent. */
+    void lockstepTicked() {
+        throttle.ticked();
+    }
+
     /** Keep-alives after this much silence instead of {@link Silence#EVERY}. */
     void keepAliveEvery(Duration silence) {
         this.silence.every(silence);

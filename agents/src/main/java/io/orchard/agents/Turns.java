@@ -50,6 +50,11 @@ final class Turns {
         return time;
     }
 
+    /** Whether the server's clock is lockstep. */
+    boolean lockstep() {
+        return lockstep;
+    }
+
     /** Ticks a second, as the server welcomed the agent. */
     int tickRate() {
         return tickRate;

@@ -108,15 +108,15 @@ class AgentModelTest {
     }
 
     @Test
-    void aGltfWithItsBufferAndTextureInFilesNextToItIsSentAsOneFile() throws IOException {
+    void aGltfWithItsBufferAndTextureInFilesNextToItIsSentAsAZipOfThem() throws IOException {
         AgentModel model = AgentModel.load(AgentModelTest.class, "split/Split.gltf");
 
-        String sent = new String(model.spec().bytes(), StandardCharsets.UTF_8);
-        assertThat(sent).doesNotContain("Split.bin", "Split%20skin.png")
-                .contains("\"uri\":\"data:application/octet-stream;base64,", "\"uri\":\"data:image/png;base64,");
-        byte[] bin = java.util.Base64.getDecoder().decode(sent.replaceFirst(
-                "(?s).*?\"uri\":\"data:application/octet-stream;base64,([^\"]*)\".*", "$1"));
-        assertThat(bin).hasSize(68);
+        assertThat(model.spec().format()).isEqualTo(ModelFormat.ZIP);
+        io.orchard.protocol.value.ModelArchive sent = io.orchard.protocol.value.ModelArchive.read(model.spec().bytes());
+        assertThat(sent.modelPath()).isEqualTo("Split.gltf");
+        assertThat(sent.paths()).containsExactly("Split.gltf", "Split.bin", "textures/Split skin.png");
+        assertThat(sent.file("Split.bin").orElseThrow()).hasSize(68);
+        assertThat(sent.resolve("Split.gltf", "textures/Split%20skin.png")).isEqualTo("textures/Split skin.png");
         assertThat(model.problems("Split", List.of("node#1"), List.of("clip#0"))).isEmpty();
     }
 

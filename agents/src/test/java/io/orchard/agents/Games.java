@@ -74,6 +74,12 @@ public final class Games {
         return play(seed, timeLimit, agents, (name, radius) -> null, new GameListener() { }, recording);
     }
 
+    /** As {@link #recorded(long, double, List, Path)}, placing the agents and with a listener of the game. */
+    public static Result recorded(long seed, double timeLimit, List<? extends AgentController> agents,
+                                  Placement placement, GameListener listener, Path recording) throws Exception {
+        return play(seed, timeLimit, agents, placement, listener, recording);
+    }
+
     private static Result play(long seed, double timeLimit, List<? extends AgentController> agents, Placement placement,
                                GameListener listener, @Nullable Path recording) throws Exception {
         AtomicInteger eaten = new AtomicInteger();

@@ -96,6 +96,7 @@ public final class Orchard implements Callable<Integer> {
                 new CommandLine(new TournamentCommand(out)),
                 new CommandLine(new EmbeddedCommand(out)),
                 new CommandLine(new ParseCommand(out)),
+                new CommandLine(new ModelInfoCommand(out)),
                 new CommandLine(new ProtocolSchemaCommand(out)),
                 new CommandLine(new CompletionCommand(out)));
     }

@@ -1,11 +1,13 @@
 package io.orchard.examples;
 
 import io.orchard.agents.cli.LanguageModelOptions;
+import io.orchard.agents.cli.LanguageOption;
 import io.orchard.agents.language.Ask;
 import io.orchard.agents.language.GoalJson;
 import io.orchard.agents.language.InstructionInterpreter;
 import io.orchard.agents.language.Interpretation;
 import io.orchard.agents.language.Interpreter;
+import io.orchard.agents.language.Language;
 import io.orchard.agents.language.LanguageModel;
 import io.orchard.agents.language.LanguageModelInterpreter;
 import java.io.PrintStream;
@@ -22,8 +24,8 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code ./orchard parse [--agents NAMES] [--notation] SENTENCE...}: shows what an agent makes of an
- * instruction in English, as {@link InstructionInterpreter} understands it: the goal as JSON and
+ * {@code ./orchard parse [--agents NAMES] [--language CODE] [--notation] SENTENCE...}: shows what an
+ * agent makes of an instruction in English (or German, with {@code --language de}), as {@link InstructionInterpreter} understands it: the goal as JSON and
  * the agent's one-line restatement (and, for a question, which question it is), or the agent's answer
  * when it does not understand. Either way
  * the exit status is 0; only a command line without a sentence is a usage error.
@@ -34,8 +36,9 @@ import picocli.CommandLine.Spec;
                     + "restatement, or, when it does not understand, its answer, which names the words it does not "
                     + "know. The sentence may be one argument or several words; everything after -- is taken as the "
                     + "sentence. The grammar, the vocabulary and the forms of goals are described in "
-                    + "docs/instructions.md. With --language-model, a sentence the grammar does not understand is "
-                    + "given to that model, as an agent with the same options does."},
+                    + "docs/instructions.md. With --language de, German is understood too, and the restatement or "
+                    + "answer is in the language of the sentence. With --language-model, a sentence the grammar does "
+                    + "not understand is given to that model, as an agent with the same options does."},
         descriptionHeading = "%n", parameterListHeading = "%nArguments:%n", optionListHeading = "%nOptions:%n",
         footerHeading = "%nExample:%n", footer = "  ./orchard parse \"get the nearest banana on a table\"")
 public final class ParseCommand implements Callable<Integer> {
@@ -47,6 +50,9 @@ public final class ParseCommand implements Callable<Integer> {
             description = "Other agents' names to know, separated by commas; Dwarf, Robot, Bunny, Guppy and Roadrunner "
                     + "are always known")
     private List<String> agentLists = new ArrayList<>();
+
+    @Mixin
+    private LanguageOption language;
 
     @Mixin
     private LanguageModelOptions languageModel;
@@ -77,7 +83,7 @@ public final class ParseCommand implements Callable<Integer> {
             throw new ParameterException(spec.commandLine(),
                     "expected a sentence, for example: ./orchard parse \"go to the castle\"");
         }
-        Interpreter interpreter = new InstructionInterpreter(agents);
+        Interpreter interpreter = new InstructionInterpreter(agents, language.language());
         LanguageModel model = languageModel.model();
         if (model != null) {
             interpreter = new LanguageModelInterpreter(interpreter, model);
@@ -89,6 +95,9 @@ public final class ParseCommand implements Callable<Integer> {
             if (understood.goal() instanceof Ask ask) {
                 out.println("A question (" + ask.topic().wireName() + "): the agent answers it from what it knows "
                         + "and goes on with what it was doing.");
+            }
+            if (understood.language() != Language.ENGLISH) {
+                out.println("Read as " + understood.language().englishName() + ".");
             }
             out.println(understood.restatement());
         } else if (interpretation instanceof Interpretation.NotUnderstood notUnderstood) {

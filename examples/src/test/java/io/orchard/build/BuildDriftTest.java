@@ -297,6 +297,16 @@ class BuildDriftTest {
         }
 
         @Test
+        void moduleSettingsCheckReportsAnExclusionOnlyOneBuildMakes() throws IOException {
+            Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
+
+            assertThat(driftsAfterEdit(check, "agents/build.gradle.kts",
+                    "        exclude(group = \"tools.jackson.dataformat\", module = \"jackson-dataformat-yaml\")\n", ""))
+                    .containsExactly(new Drift("agents exclusions of com.networknt:json-schema-validator",
+                            "tools.jackson.dataformat:jackson-dataformat-yaml", Drift.ABSENT));
+        }
+
+        @Test
         void moduleSettingsCheckReportsAModuleTheBomLeavesOut() throws IOException {
             Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
 

@@ -60,6 +60,10 @@ record GradleBuild(List<String> modules, VersionCatalog catalog, Map<String, Str
     private static final Pattern DEPENDENCIES = Pattern.compile("(?m)^dependencies\\s*\\{");
     private static final Pattern CONSTRAINTS = Pattern.compile("(?m)^\\s*constraints\\s*\\{");
     private static final Pattern DECLARATION = Pattern.compile("(?<configuration>\\w+)\\s*\\((?<notation>.*)\\)");
+    /** A declaration with a block after it: {@code implementation(libs.x) { exclude(...) }}, folded onto one line. */
+    private static final Pattern WITH_BLOCK = Pattern.compile("(?<declaration>.*\\))\\s*\\{(?<block>.*)}");
+    private static final Pattern EXCLUDE = Pattern.compile(
+            "exclude\\(\\s*group\\s*=\\s*\"(?<group>[^\"]+)\"\\s*,\\s*module\\s*=\\s*\"(?<module>[^\"]+)\"\\s*\\)");
     private static final Pattern PROJECT = Pattern.compile("project\\(\\s*\"(?<path>[^\"]+)\"\\s*\\)");
     private static final Pattern PLATFORM = Pattern.compile("(?:platform|enforcedPlatform)\\(.*\\)");
     private static final Pattern CATALOG_ENTRY = Pattern.compile("libs(?:\\.\\w+)+");
@@ -152,10 +156,25 @@ record GradleBuild(List<String> modules, VersionCatalog catalog, Map<String, Str
         Map<String, Usage> onLibraries = new HashMap<>();
         Map<String, List<String>> ownConfigurations = new TreeMap<>();
         List<String> constrained = new ArrayList<>();
+        Map<String, String> exclusions = new TreeMap<>();
         List<String> lines = dependencyLines(script);
         for (String marked : lines) {
             boolean constraint = marked.startsWith(CONSTRAINT);
             String line = constraint ? marked.substring(CONSTRAINT.length()) : marked;
+            List<String> excluded = new ArrayList<>();
+            Matcher withBlock = WITH_BLOCK.matcher(line);
+            if (withBlock.matches()) {
+                String block = withBlock.group("block");
+                Matcher exclude = EXCLUDE.matcher(block);
+                while (exclude.find()) {
+                    excluded.add(exclude.group("group") + ":" + exclude.group("module"));
+                }
+                if (!EXCLUDE.matcher(block).replaceAll("").replace(";", "").isBlank()) {
+                    throw new IllegalArgumentException("expected only exclude(group = \"...\", module = \"...\") in "
+                            + "the block of a dependency in " + file + ", was: " + line);
+                }
+                line = withBlock.group("declaration");
+            }
             Matcher declaration = DECLARATION.matcher(line);
             if (!declaration.matches()) {
                 throw new IllegalArgumentException(
@@ -181,6 +200,9 @@ record GradleBuild(List<String> modules, VersionCatalog catalog, Map<String, Str
             } else {
                 throw new IllegalArgumentException("expected project(\":module\"), platform(...), libs.<alias> or "
                         + "\"group:artifact:version\" in the dependencies of " + file + ", was: " + line);
+            }
+            if (!excluded.isEmpty()) {
+                exclusions.put("exclusions of " + dependency, String.join(", ", excluded.stream().sorted().toList()));
             }
             if (constraint) {
                 constrained.add(dependency);
@@ -225,6 +247,7 @@ record GradleBuild(List<String> modules, VersionCatalog catalog, Map<String, Str
             }
             settings.put("run-only libraries", String.join(", ", runOnly.stream().sorted().toList()));
         }
+        settings.putAll(exclusions);
         return new ModuleBuild(module, find(GROUP, script).orElse(null), find(ARTIFACT, script).orElse(module),
                 find(VERSION, script).orElse(null), kind, onModules, onLibraries, settings);
     }
@@ -350,7 +373,20 @@ record GradleBuild(List<String> modules, VersionCatalog catalog, Map<String, Str
                     .forEach(line -> lines.add(CONSTRAINT + line));
             body = body.substring(0, constraints.start()) + body.substring(constraints.end() + inside.length() + 1);
         }
-        body.lines().map(GradleBuild::declarationLine).filter(line -> !line.isEmpty()).forEach(lines::add);
+        StringBuilder open = null;
+        for (String line : body.lines().map(GradleBuild::declarationLine).filter(line -> !line.isEmpty()).toList()) {
+            if (open != null) {
+                open.append(line.equals("}") ? "}" : line + ";");
+                if (line.equals("}")) {
+                    lines.add(open.toString());
+                    open = null;
+                }
+            } else if (line.endsWith("{")) {
+                open = new StringBuilder(line);
+            } else {
+                lines.add(line);
+            }
+        }
         return lines;
     }
 

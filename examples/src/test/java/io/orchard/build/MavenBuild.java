@@ -170,6 +170,18 @@ record MavenBuild(List<String> modules, Map<String, String> properties, Map<Stri
             }
             settings.put("managed modules", String.join(", ", managed.stream().sorted().toList()));
         }
+        for (Element dependency : children(child(pom, "dependencies"), "dependency")) {
+            List<String> excluded = new ArrayList<>();
+            for (Element exclusion : children(child(dependency, "exclusions"), "exclusion")) {
+                excluded.add(childText(exclusion, "groupId").orElse("") + ":"
+                        + childText(exclusion, "artifactId").orElse(""));
+            }
+            if (!excluded.isEmpty()) {
+                settings.put("exclusions of " + resolve(childText(dependency, "groupId").orElse(""), values) + ":"
+                        + resolve(childText(dependency, "artifactId").orElse(""), values),
+                        String.join(", ", excluded.stream().sorted().toList()));
+            }
+        }
         // The run profile's exec plugin is the Maven build's run task; the others (bench, load) are Maven's alone.
         for (Element profile : children(child(pom, "profiles"), "profile")) {
             if (!RUN_PROFILE.equals(childText(profile, "id").orElse(""))) {

@@ -147,6 +147,41 @@ class OrchardScriptTest {
     }
 
     @Test
+    void aBuiltProjectIsBuiltAgainForAChangedModuleAndNotForAFolderMavenDoesNotBuild() throws Exception {
+        Path root = project("#!/bin/sh\n: > maven-ran\nmkdir -p examples/target && : > examples/target/classpath.txt\n",
+                true);
+        Files.writeString(root.resolve("pom.xml"), "<project/>");
+        for (String module : List.of("protocol", "examples")) {
+            Files.createDirectories(root.resolve(module).resolve("src/main"));
+            Files.writeString(root.resolve(module).resolve("pom.xml"), "<project/>");
+            Files.createDirectories(root.resolve(module).resolve("target/classes"));
+        }
+        Path python = Files.createDirectories(root.resolve("python/src/orchard_world"));
+        Files.writeString(root.resolve("examples/target/classpath.txt"), "");
+        Path stamp = Files.writeString(root.resolve("examples/target/orchard.stamp"), "");
+        long built = System.currentTimeMillis() - 60_000;
+        try (var files = Files.walk(root)) {
+            for (Path file : files.toList()) {
+                assertThat(file.toFile().setLastModified(built - 60_000)).isTrue();
+            }
+        }
+        assertThat(stamp.toFile().setLastModified(built)).isTrue();
+        // pip install ./python writes its egg-info into python/src, after the build
+        Files.createDirectories(python.resolveSibling("orchard_world.egg-info"));
+
+        Process orchard = start(root);
+        assertThat(orchard.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(orchard.exitValue()).isZero();
+        assertThat(root.resolve("maven-ran")).as("built again; said: %s", said).doesNotExist();
+
+        Files.writeString(root.resolve("protocol/src/main/Changed.java"), "class Changed {}");
+        Process again = start(root);
+        assertThat(again.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(root.resolve("maven-ran")).as("a module's change builds it").exists();
+        assertThat(said).contains("orchard: rebuilding the project...");
+    }
+
+    @Test
     void fetchingMavenItselfIsSaid() throws Exception {
         Path root = project("#!/bin/sh\nmkdir -p examples/target && : > examples/target/classpath.txt\n", false);
         Process orchard = start(root);

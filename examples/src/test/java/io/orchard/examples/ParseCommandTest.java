@@ -35,6 +35,18 @@ class ParseCommandTest {
     }
 
     @Test
+    void withLanguageDeAGermanSentenceIsReadAndRestatedInGerman() {
+        assertThat(run("--language", "de", "--notation", "nimm die nächste Banane auf dem Tisch")).isZero();
+        assertThat(out()).isEqualTo("""
+                collect(nearest banana on(table))
+                Read as German.
+                Ich hebe die nächste Banane auf, die auf einem Tisch liegt.
+                """);
+        assertThat(run("--language", "fr", "go")).isEqualTo(2);
+        assertThat(err()).contains("invalid value for option '--language': 'fr' (expected en or de)");
+    }
+
+    @Test
     void printsTheGoalAsJsonAndTheRestatement() {
         assertThat(run("get the nearest banana on a table")).isZero();
         assertThat(out()).isEqualTo("""

@@ -5,6 +5,7 @@ import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.Message;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ServerMessage;
+import io.orchard.protocol.value.ModelArchive;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import java.nio.charset.StandardCharsets;
@@ -167,7 +168,7 @@ public final class MessageCodec {
     /**
      * Decodes a line sent by a client, as the server does: a message of the server's direction is
      * refused, and so is a {@code Register} whose model is a bundled one that does not exist (one
-     * not in {@link ModelSpec#BUNDLED_NAMES}).
+     * not in {@link ModelSpec#BUNDLED_NAMES}) or a zip that {@link ModelArchive} refuses.
      *
      * @throws ProtocolException when the line is not a valid client message
      */
@@ -188,6 +189,15 @@ public final class MessageCodec {
             // Checked here, not in ModelSpec: a viewer reading a newer server's AgentAdded shows a placeholder instead.
             throw new ProtocolException(ErrorCode.INVALID_VALUE, "model.bundled must be one of "
                     + quoted(ModelSpec.BUNDLED_NAMES) + ", was '" + register.model().bundled() + "'", register.seq());
+        }
+        if (client instanceof RegisterMessage register && register.model() != null
+                && register.model().format() == ModelFormat.ZIP) {
+            // Checked once, here, so that every viewer is sent only archives it can unpack safely.
+            try {
+                ModelArchive.read(register.model().bytes());
+            } catch (IllegalArgumentException e) {
+                throw new ProtocolException(ErrorCode.INVALID_VALUE, "model.data: " + e.getMessage(), register.seq());
+            }
         }
         return client;
     }

@@ -78,8 +78,9 @@ class DecodeErrorsTest {
         boolean for a string             | {"type":"Say","seq":1,"agent":"Guppy","text":false}   | invalid_value   | text must be a string, was false
         enum in the wrong case           | {"type":"Hello","seq":1,"protocolVersion":2,"role":"Agent","client":"c"} | invalid_value | role must be one of 'agent', 'viewer', was the string 'Agent'
         number for an enum               | {"type":"Hello","seq":1,"protocolVersion":2,"role":5,"client":"c"} | invalid_value | role must be one of 'agent', 'viewer', was 5
-        unknown command                  | {"type":"GameControl","seq":1,"command":"explode"}    | invalid_value   | command must be one of 'start', 'pause', 'resume', was the string 'explode'
-        an enum's index                  | {"type":"GameControl","seq":1,"command":1}            | invalid_value   | command must be one of 'start', 'pause', 'resume', was 1
+        unknown command                  | {"type":"GameControl","seq":1,"command":"explode"}    | invalid_value   | command must be one of 'start', 'pause', 'resume', 'restart', was the string 'explode'
+        an enum's index                  | {"type":"GameControl","seq":1,"command":1}            | invalid_value   | command must be one of 'start', 'pause', 'resume', 'restart', was 1
+        a seed for a start               | {"type":"GameControl","seq":1,"command":"start","seed":5} | invalid_value | seed goes only with the command 'restart', was given with 'start'
         number for an object             | {"type":"Move","seq":6,"agent":"Guppy","from":5,"to":{"x":1,"y":0,"z":2}} | invalid_value | from must be an object, was 5
         string for a nested number       | {"type":"Move","seq":6,"agent":"Guppy","from":{"x":"1","y":0,"z":2},"to":{"x":1,"y":0,"z":2}} | invalid_value | from.x must be a number, was the string '1'
         object for a list                | {"type":"ScoreUpdate","tick":1,"scores":{}}           | invalid_value   | scores must be an array, was an object

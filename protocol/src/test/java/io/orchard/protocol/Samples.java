@@ -60,6 +60,7 @@ final class Samples {
             new GameStartedMessage(0, 1998, 30, 180),
             new ScoreUpdateMessage(44, SCORES),
             new GameOverMessage(3600, "time limit reached", SCORES),
+            new NewGameMessage(0, 180.0),
             new WorldSnapshotMessage(44, 2.2, new Bounds(-100, -100, 100, 100),
                     List.of(new Obstacle("T1", ObjectKind.TREE, new Point2(-20, 30), 2.5, 7),
                             new Obstacle("D1", ObjectKind.TABLE, new Point2(15, -10), 1.2, 0.9)),

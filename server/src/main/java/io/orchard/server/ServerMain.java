@@ -43,8 +43,9 @@ import picocli.CommandLine.Spec;
             "It holds the world and the game and speaks the protocol on one TCP port; it prints the game's state "
                     + "every second and the ranking when the game is over."},
         descriptionHeading = "%n", optionListHeading = "%nOptions:%n", footerHeading = "%n",
-        footer = {"Console commands: start, pause, continue, status, checkpoint [FILE], stop. When standard input "
-                + "ends, the server runs on (stop it with Ctrl-C or SIGTERM) unless --stop-on-stdin-close is given.",
+        footer = {"Console commands: start, pause, continue, status, checkpoint [FILE], restart [SEED], stop. When "
+                + "standard input ends, the server runs on (stop it with Ctrl-C or SIGTERM) unless "
+                + "--stop-on-stdin-close is given.",
             "",
             "Environment: " + ServerMain.OPERATOR_TOKEN_VARIABLE + " gives the operator token when --operator-token "
                     + "does not, out of sight of other users' ps."})
@@ -141,6 +142,12 @@ public final class ServerMain implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print the status line every second")
     private boolean quiet;
 
+    @Option(names = "--keep-serving",
+            description = "Stay when a game is over, for the next: the operator's GameControl restart, or the "
+                    + "console's restart, starts it on the same connections; by default the server exits after one "
+                    + "game, and refuses restarts")
+    private boolean keepServing;
+
     @Option(names = "--stop-on-stdin-close",
             description = "End the game and exit when standard input ends (for a program that starts the server "
                     + "and holds its input); by default the server runs on")
@@ -213,29 +220,49 @@ public final class ServerMain implements Callable<Integer> {
             if (resume != null) {
                 out.println("resumed from " + resume + ": " + server.status());
             }
-            Thread commands = new Thread(() -> readCommands(server, console, out, stopOnStdinClose),
-                    "orchard-console");
+            java.util.concurrent.CountDownLatch leaving = new java.util.concurrent.CountDownLatch(1);
+            java.util.concurrent.CompletableFuture<List<Score>> first = server.gameOver(); // before any restart
+            Thread commands = new Thread(() -> readCommands(server, console, out, stopOnStdinClose,
+                    leaving::countDown), "orchard-console");
             commands.setDaemon(true);
             commands.start();
-            while (!server.gameOver().isDone()) {
-                try {
-                    server.gameOver().get(1, java.util.concurrent.TimeUnit.SECONDS);
-                } catch (java.util.concurrent.TimeoutException e) {
-                    if (!quiet) {
-                        out.println(server.status());
-                    }
-                } catch (java.util.concurrent.CancellationException e) {
-                    break;
-                }
-            }
-            if (server.gameOver().isDone() && !server.gameOver().isCancelled()) {
-                printRanking(server.gameOver().join(), out);
-            }
+            serve(server, first, leaving);
         } catch (IOException e) {
             err.println("orchard server: " + e.getMessage());
             return 1;
         }
         return 0;
+    }
+
+    /**
+     * Until the game is over, printing the status every second unless quiet, and its ranking then;
+     * with --keep-serving, game after game until the console stops the server.
+     */
+    private void serve(WorldServer server, java.util.concurrent.CompletableFuture<List<Score>> first,
+                       java.util.concurrent.CountDownLatch leaving) throws InterruptedException {
+        java.util.concurrent.CompletableFuture<List<Score>> game = first;
+        while (true) {
+            try {
+                printRanking(game.get(1, java.util.concurrent.TimeUnit.SECONDS), out);
+                if (!keepServing) {
+                    return;
+                }
+                // The next game is the operator's to start; the console's stop ends the server.
+                while (server.gameOver() == game) {
+                    // A restart before the stop has made its game by the time the stop is told.
+                    if (leaving.await(50, java.util.concurrent.TimeUnit.MILLISECONDS) && server.gameOver() == game) {
+                        return;
+                    }
+                }
+                game = server.gameOver();
+            } catch (java.util.concurrent.TimeoutException e) {
+                if (!quiet) {
+                    out.println(server.status());
+                }
+            } catch (java.util.concurrent.CancellationException | java.util.concurrent.ExecutionException e) {
+                return;
+            }
+        }
     }
 
     private void configure(WorldServer.Builder builder) {
@@ -271,16 +298,23 @@ public final class ServerMain implements Callable<Integer> {
             builder.resume(resume);
         }
         builder.nameReservation(Duration.ofMillis((long) (nameReservation * 1000)));
+        if (!keepServing) {
+            builder.oneGame("this server stops when its game is over: start it with --keep-serving to restart games");
+        }
     }
 
     private static void readCommands(WorldServer server, InputStream console, PrintStream out,
-                                     boolean stopOnClose) {
+                                     boolean stopOnClose, Runnable leave) {
         try (BufferedReader in = new BufferedReader(new InputStreamReader(console, StandardCharsets.UTF_8))) {
             String line;
             while ((line = in.readLine()) != null) {
                 String command = line.strip().toLowerCase(Locale.ROOT);
                 if (command.startsWith("checkpoint")) {
                     checkpoint(server, line.strip().substring("checkpoint".length()).strip(), out);
+                    continue;
+                }
+                if (command.startsWith("restart")) {
+                    restart(server, command.substring("restart".length()).strip(), out);
                     continue;
                 }
                 switch (command) {
@@ -297,15 +331,37 @@ public final class ServerMain implements Callable<Integer> {
                         }
                     }
                     case "status" -> out.println(server.status());
-                    case "stop", "quit" -> server.endGame("stopped from the console");
+                    case "stop", "quit" -> {
+                        server.endGame("stopped from the console");
+                        leave.run();
+                    }
                     default -> out.println("unknown command '" + command
-                            + "'; commands: start, pause, continue, status, checkpoint [FILE], stop");
+                            + "'; commands: start, pause, continue, status, checkpoint [FILE], restart [SEED], stop");
                 }
             }
         } catch (IOException e) {
             // Unreadable input is closed input.
         }
         consoleClosed(server, out, stopOnClose);
+        if (stopOnClose) {
+            leave.run();
+        }
+    }
+
+    private static void restart(WorldServer server, String seed, PrintStream out) {
+        long next;
+        try {
+            next = seed.isEmpty() ? server.seed() : Long.parseLong(seed);
+        } catch (NumberFormatException e) {
+            out.println("restart takes a whole number as the new game's seed, was '" + seed + "'");
+            return;
+        }
+        try {
+            server.restart(next);
+            out.println("restarting: a new game of seed " + next + " waits for its agents");
+        } catch (IllegalStateException e) {
+            out.println("cannot restart: " + e.getMessage());
+        }
     }
 
     /**

@@ -1,6 +1,5 @@
 package io.orchard.server;
 
-import io.orchard.protocol.value.Score;
 import io.orchard.server.net.NetServer;
 import io.orchard.server.sim.Checkpoint;
 import io.orchard.server.sim.GameListener;
@@ -9,14 +8,15 @@ import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.sim.TickLoop;
+import io.orchard.server.world.scenario.Scenario;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
 import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.function.LongFunction;
 
 /**
  * Puts a {@link WorldServer} together from its builder's settings, in order: the game (new, or
@@ -33,9 +33,11 @@ final class Startup {
         Checkpoint saved = settings.resume != null ? GameFiles.checkpoint(settings.resume) : null;
         long actualSeed = saved != null ? saved.seed()
                 : settings.seed != null ? settings.seed : ThreadLocalRandom.current().nextLong(1, 1L << 48);
-        World world = saved != null ? World.fromScenario(saved.world())
-                : settings.scenario != null ? World.fromScenario(GameFiles.scenario(settings.scenario))
-                : WorldGenerator.standard(actualSeed).generate();
+        Scenario scenario = settings.scenario != null ? GameFiles.scenario(settings.scenario) : null;
+        // A restarted game's world: the scenario's again, or the one its seed makes.
+        LongFunction<World> worlds = scenario != null ? seed -> World.fromScenario(scenario)
+                : seed -> WorldGenerator.standard(seed).generate();
+        World world = saved != null ? World.fromScenario(saved.world()) : worlds.apply(actualSeed);
         SimulationConfig config = saved != null
                 ? new SimulationConfig(saved.tickRate(), saved.clock(), saved.timeLimit(), saved.waitFor(),
                         settings.lockstepDeadline, SimulationConfig.DEFAULT.agentsPerSession(),
@@ -45,22 +47,26 @@ final class Startup {
                         SimulationConfig.DEFAULT.bodyLimits());
         Recorder recorder = settings.record != null ? GameFiles.recorder(settings.record, saved != null)
                 : Recorder.NONE;
-        CompletableFuture<List<Score>> over = new CompletableFuture<>();
+        GameResults over = new GameResults();
         List<GameListener> all = new ArrayList<>(settings.listeners);
-        all.add(new GameListener() {
-            @Override
-            public void gameOver(String reason, List<Score> ranking) {
-                over.complete(ranking);
-            }
-        });
+        all.add(over);
         Simulation simulation = new Simulation(world, config, actualSeed, Version.current(), recorder, all,
                 settings.placement);
         simulation.reserveDroppedNames(settings.nameReservation);
         if (saved != null) {
             simulation.restore(saved);
             if (simulation.phase() == Phase.OVER) {
-                over.complete(simulation.ranking());
+                over.gameOver("over when saved", simulation.ranking());
             }
+        }
+        if (settings.oneGame != null) {
+            simulation.oneGameOnly(settings.oneGame);
+        } else if (settings.record != null || settings.checkpointFile != null || saved != null) {
+            simulation.oneGameOnly("this server plays one game: it " + (settings.record != null ? "records it"
+                    : saved != null ? "continues a saved one" : "saves it to a checkpoint file")
+                    + "; start a server for each game instead");
+        } else {
+            simulation.restartsWith(worlds);
         }
         Checkpoints checkpoints = new Checkpoints(settings.checkpointFile);
         if (settings.checkpointFile != null) {

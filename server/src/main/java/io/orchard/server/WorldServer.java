@@ -50,13 +50,13 @@ public final class WorldServer implements AutoCloseable {
     private final TickLoop loop;
     private final Thread tickThread;
     private final Recorder recorder;
-    private final CompletableFuture<List<Score>> gameOver;
+    private final GameResults gameOver;
     private final Checkpoints checkpoints;
     private final WebFrontEnd.Serving web;
     private boolean closed;
 
     WorldServer(Simulation simulation, NetServer net, TickLoop loop, Thread tickThread, Recorder recorder,
-                CompletableFuture<List<Score>> gameOver, Checkpoints checkpoints, WebFrontEnd.Serving web) {
+                GameResults gameOver, Checkpoints checkpoints, WebFrontEnd.Serving web) {
         this.simulation = simulation;
         this.net = net;
         this.loop = loop;
@@ -129,6 +129,37 @@ public final class WorldServer implements AutoCloseable {
     /** Ends the game now. Safe from any thread. */
     public void endGame(String reason) {
         simulation.execute(() -> simulation.end(reason));
+    }
+
+    /**
+     * Ends the game, if it is not over, and starts a new one of the world of {@code seed} on the same
+     * server and connections, as the operator's {@code GameControl restart} does: at the end of the
+     * current tick, or at once while no tick runs. Returns once it is done: {@link #gameOver()} is
+     * then the new game's. Safe from any thread but the game's own (a {@link GameListener}'s).
+     *
+     * @throws IllegalStateException when this server plays one game only: it records its game, saves
+     *                               it to a checkpoint file, or continues a saved one
+     */
+    public void restart(long seed) {
+        CompletableFuture<Void> done = new CompletableFuture<>();
+        simulation.execute(() -> {
+            try {
+                simulation.restart(seed, () -> done.complete(null));
+            } catch (IllegalStateException e) {
+                done.completeExceptionally(e);
+            }
+        });
+        // A lockstep tick under way ends when its agents have ended their turns, or at its deadline.
+        long waitMillis = simulation.config().lockstepDeadline().toMillis() + 5_000;
+        try {
+            done.get(waitMillis, java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (java.util.concurrent.ExecutionException e) {
+            throw (IllegalStateException) e.getCause();
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new IllegalStateException("the game did not restart within " + waitMillis + " ms", e);
+        }
     }
 
     /** A one-line account of the game: phase, time, agents, fruit left and scores. Safe from any thread. */
@@ -205,15 +236,18 @@ public final class WorldServer implements AutoCloseable {
         return simulation.phase();
     }
 
-    /** Completes with the final ranking when the game is over. */
+    /**
+     * Completes with the final ranking when the current game is over; after a {@link #restart}, the
+     * new game's.
+     */
     public CompletableFuture<List<Score>> gameOver() {
-        return gameOver;
+        return gameOver.current();
     }
 
-    /** Waits until the game is over and returns the ranking. */
+    /** Waits until the current game is over and returns the ranking. */
     public List<Score> awaitGameOver() throws InterruptedException {
         try {
-            return gameOver.get();
+            return gameOver.current().get();
         } catch (java.util.concurrent.ExecutionException e) {
             throw new IllegalStateException(e.getCause());
         }
@@ -249,7 +283,7 @@ public final class WorldServer implements AutoCloseable {
         net.close();
         simulation.stopped();
         recorder.close();
-        gameOver.cancel(false);
+        gameOver.cancel();
     }
 
     /**
@@ -278,6 +312,7 @@ public final class WorldServer implements AutoCloseable {
         String operatorToken;
         NetLimits limits = NetLimits.DEFAULT;
         Placement placement = (name, radius) -> null;
+        String oneGame;
         final List<GameListener> listeners = new ArrayList<>();
 
         private Builder() {}
@@ -449,6 +484,21 @@ public final class WorldServer implements AutoCloseable {
                 throw new IllegalArgumentException("the operator token must differ from the token: every client"
                         + " holds the token, and would control the game");
             }
+        }
+
+        /**
+         * Refuse to restart the game ({@link WorldServer#restart}, the operator's {@code GameControl
+         * restart}), with this reason: for a program that ends with the server's first game. A server
+         * that records its game, saves it to a checkpoint file or continues a saved one refuses
+         * restarts anyway.
+         */
+        public Builder oneGame(String reason) {
+            if (reason == null || reason.isBlank()) {
+                throw new IllegalArgumentException("the reason for playing one game only must be said, was "
+                        + (reason == null ? "null" : "'" + reason + "'"));
+            }
+            this.oneGame = reason;
+            return this;
         }
 
         /** Per-connection limits (rates, timeouts, queues). */

@@ -36,10 +36,30 @@ class ServerMainTest {
     @Test
     void helpListsEveryOptionAndTheConsoleCommands() throws Exception {
         assertThat(run("", "--help")).isZero();
-        assertThat(out()).contains("--port", "--bind", "--seed", "--clock", "--wait-for", "--scenario", "--time-limit",
+        // picocli wraps the footer at 80 columns
+        assertThat(out().replaceAll("\\s+", " ")).contains("--port", "--bind", "--seed", "--clock", "--wait-for",
+                "--scenario", "--time-limit",
                 "--record", "--token", "--operator-token", "--checkpoint", "--checkpoint-every", "--resume",
-                "--name-reservation", "--stop-on-stdin-close",
-                "Console commands: start, pause, continue, status, checkpoint [FILE], stop", "ORCHARD_OPERATOR_TOKEN");
+                "--name-reservation", "--keep-serving", "--stop-on-stdin-close",
+                "Console commands: start, pause, continue, status, checkpoint [FILE], restart [SEED], stop",
+                "ORCHARD_OPERATOR_TOKEN");
+    }
+
+    @Test
+    void withKeepServingTheConsoleRestartsTheGameAndTheServerServesTheNextUntilStopped() throws Exception {
+        assertThat(run("restart 4\nstatus\nstop\n", "--port", "0", "--seed", "3", "--keep-serving", "--quiet"))
+                .isZero();
+        assertThat(out()).contains("restarting: a new game of seed 4 waits for its agents", "waiting  t=0.0s  tick 0");
+        assertThat(out().split("Game over. Ranking:", -1)).as("games over: the restarted one, the stopped one")
+                .hasSize(3);
+    }
+
+    @Test
+    void withoutKeepServingTheServerPlaysOneGameAndARestartIsRefusedSayingHow() throws Exception {
+        assertThat(run("restart 4\n", "--port", "0", "--seed", "3", "--quiet", "--stop-on-stdin-close")).isZero();
+        assertThat(out()).contains("cannot restart: this server stops when its game is over: start it with "
+                + "--keep-serving to restart games");
+        assertThat(out().split("Game over. Ranking:", -1)).hasSize(2);
     }
 
     @ParameterizedTest(name = "{0}")

@@ -12,6 +12,7 @@ import io.orchard.viewer.state.HudState;
 import io.orchard.viewer.state.InstructionState;
 import io.orchard.viewer.state.KeysState;
 import io.orchard.viewer.state.LiveState;
+import io.orchard.viewer.state.MarkersState;
 import io.orchard.viewer.state.MeasureState;
 import io.orchard.viewer.state.ReplayState;
 import io.orchard.viewer.state.RunControl;
@@ -98,6 +99,7 @@ final class ViewerApp extends SimpleApplication implements RunControl {
         }
         stateManager.attach(new WorldSceneState(mirror, options.shadows()));
         stateManager.attach(new AgentsState(mirror, clock, ModelLimits.DEFAULTS));
+        stateManager.attach(new MarkersState(mirror, clock));
         SelectionState selection = new SelectionState(mirror, clock);
         stateManager.attach(selection);
         stateManager.attach(new CameraState(mirror, clock, !options.headless(), vector(options.camera()),

@@ -128,7 +128,7 @@ final class ViewerCommand implements Callable<Integer> {
     private Double timeout;
 
     @Option(names = "--measure", paramLabel = "SECONDS", converter = CommandLines.Measure.class,
-            description = "Measure frames per second over SECONDS of wall-clock time, then exit")
+            description = "Measure frames per second (and the draw calls a frame) over SECONDS of wall-clock time, then exit")
     private Double measure;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")

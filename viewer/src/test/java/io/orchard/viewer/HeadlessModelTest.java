@@ -58,6 +58,11 @@ class HeadlessModelTest {
                 "--hud", "off", "--camera", "0,1.2,5", "--look-at", "0,1,0",
                 "--screenshot", "before.png", "--at", "0.4", "--screenshot", "during.png", "--at", "1.0");
         assertThat(shots.exit()).as("exit status; output:%n%s", shots.output()).isZero();
+        // Kept for a person to look at: target/skinned-*.png.
+        for (String shot : List.of("before", "during")) {
+            java.nio.file.Files.copy(dir.resolve(shot + ".png"), Path.of("target", "skinned-" + shot + ".png"),
+                    java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
         before = Frame.read(dir.resolve("before.png"), CAMERA, TARGET);
         during = Frame.read(dir.resolve("during.png"), CAMERA, TARGET);
     }

@@ -24,7 +24,8 @@ final class Site {
             "png", "image/png",
             "svg", "image/svg+xml",
             "ico", "image/x-icon",
-            "json", "application/json");
+            "json", "application/json",
+            "x3d", "model/x3d+xml");
 
     /** A file of the site: what it holds and its content type. */
     record File(byte[] bytes, String type) {}

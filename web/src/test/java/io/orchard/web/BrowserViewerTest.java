@@ -123,6 +123,20 @@ class BrowserViewerTest {
 
     @Test
     @Order(2)
+    void thePapersAgentsAreDrawnWithTheirOwnModels() throws InterruptedException {
+        // The Dwarf and the Robot send X3D, the Guppy VRML97: each read and built, none a placeholder.
+        awaitPage("orchard.agents().every(name => orchard.model(name))");
+        for (AgentController agent : agents) {
+            JsonNode model = browser.evaluate("orchard.model('" + agent.name() + "')");
+            assertThat(model.get("placeholder").asBoolean()).as("%s drawn by the placeholder because %s", agent.name(),
+                    model.get("reason")).isFalse();
+        }
+        assertThat(browser.console()).as("what the page logged").noneMatch(line -> line.contains("cannot be shown")
+                || line.startsWith("exception"));
+    }
+
+    @Test
+    @Order(2)
     void theAgentsAreDrawnWhereTheyStand() throws InterruptedException {
         server.pauseGame();
         try {

@@ -42,6 +42,7 @@ final class Chromium implements AutoCloseable {
     private final ObjectMapper json = JsonMapper.builder().build();
     private final AtomicLong ids = new AtomicLong();
     private final Map<Long, CompletableFuture<JsonNode>> pending = new ConcurrentHashMap<>();
+    private final List<String> console = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     private Chromium(Process process, Path profile, WebSocket socket) {
         this.process = process;
@@ -115,6 +116,19 @@ final class Chromium implements AutoCloseable {
 
     private void received(String text) {
         JsonNode message = json.readTree(text);
+        String event = message.path("method").asString("");
+        if (event.equals("Runtime.consoleAPICalled")) {
+            StringBuilder line = new StringBuilder(message.path("params").path("type").asString()).append(':');
+            for (JsonNode argument : message.path("params").path("args")) {
+                line.append(' ').append(argument.has("value") ? argument.get("value").asString(argument.get("value")
+                        .toString()) : argument.path("description").asString(""));
+            }
+            console.add(line.toString());
+        } else if (event.equals("Runtime.exceptionThrown")) {
+            JsonNode details = message.path("params").path("exceptionDetails");
+            console.add("exception: " + details.path("exception").path("description").asString(details.path("text")
+                    .asString()));
+        }
         if (message.has("id")) {
             CompletableFuture<JsonNode> reply = pending.remove(message.get("id").asLong());
             if (reply != null) {
@@ -169,6 +183,13 @@ final class Chromium implements AutoCloseable {
         throw new AssertionError("the page did not come to " + expression + " within " + timeout.toSeconds() + " s");
     }
 
+    /** Clicks the left mouse button at a point of the page, in CSS pixels. */
+    void click(double x, double y) {
+        for (String type : List.of("mousePressed", "mouseReleased")) {
+            call("Input.dispatchMouseEvent", Map.of("type", type, "x", x, "y", y, "button", "left", "clickCount", 1));
+        }
+    }
+
     /** Types text into the element that has the focus, as a keyboard would. */
     void type(String text) {
         call("Input.insertText", Map.of("text", text));
@@ -181,6 +202,11 @@ final class Chromium implements AutoCloseable {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    /** What the page wrote to its console, and the exceptions it did not catch, in order. */
+    List<String> console() {
+        return List.copyOf(console);
     }
 
     /** What Chromium wrote to its console and error stream, for a failure's message. */

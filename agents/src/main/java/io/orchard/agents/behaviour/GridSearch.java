@@ -9,8 +9,10 @@ import java.util.List;
  * A* over one body's {@link TerrainGrid}: eight neighbours, octile distance, no cutting corners.
  * NEAR cells cost more than FREE ones, TIGHT cells may be walked only close to the start or the
  * goal, and BLOCKED ones never, so that an agent standing in a tight spot can still step out of
- * it. The arrays are kept from one search to the next and told apart by a generation number, so
- * a search allocates little.
+ * it. The cells the rules keep the agent out of are never walked either, unless the agent stands
+ * in one: then they cost much, so that the way leads out of the area by the shortest way. The
+ * arrays are kept from one search to the next and told apart by a generation number, so a search
+ * allocates little.
  *
  * <p>Not thread-safe; one per {@link PathPlanner}.
  */
@@ -18,6 +20,8 @@ final class GridSearch {
 
     private static final double SQRT2 = Math.sqrt(2);
     private static final int MAX_EXPANSIONS = 400_000;
+    /** The extra cost of a cell a rule keeps the agent out of, for an agent that stands in one and must get out. */
+    private static final double RULE_PENALTY = 20;
 
     private final TerrainGrid grid;
     private final double radius;
@@ -27,6 +31,7 @@ final class GridSearch {
     private final int[] closed;
     private final Heap open;
     private int generation;
+    private boolean escaping;
 
     GridSearch(TerrainGrid grid, double radius) {
         this.grid = grid;
@@ -56,6 +61,7 @@ final class GridSearch {
             generation = 1;
         }
         byte[] othersMask = others.isEmpty() ? null : othersMask(others, from);
+        escaping = grid.avoided[start] != 0;
         if (goal != start && passable(goal, from, to, goalStandable, othersMask) < 0) {
             return null;
         }
@@ -118,6 +124,19 @@ final class GridSearch {
         if (othersMask != null && othersMask[cell] != 0) {
             return -1;
         }
+        double rule = 0;
+        if (grid.avoided[cell] != 0) {
+            if (!escaping) {
+                return -1; // a rule keeps the agent out
+            }
+            rule = RULE_PENALTY;
+        }
+        double penalty = terrain(cell, from, to, goalStandable);
+        return penalty < 0 ? penalty : penalty + rule;
+    }
+
+    /** The extra cost of walking through a cell as the map has it, or -1 when it may not be walked. */
+    private double terrain(int cell, Point2 from, Point2 to, boolean goalStandable) {
         byte state = grid.cells[cell];
         if (state == TerrainGrid.FREE) {
             return 0;

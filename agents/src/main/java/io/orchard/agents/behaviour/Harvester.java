@@ -120,12 +120,15 @@ public final class Harvester {
         }
     }
 
-    /** The fruit this agent could collect, nearest first: known, at a height it reaches, not given up, passing {@code filter}. */
+    /**
+     * The fruit this agent could collect, nearest first: known, at a height it reaches, not given up,
+     * allowed by the rules a person set ({@link io.orchard.agents.map.Conduct}), passing {@code filter}.
+     */
     public List<KnownFruit> candidates(Predicate<KnownFruit> filter) {
         Point2 here = motor.position();
         List<KnownFruit> list = new ArrayList<>();
         for (KnownFruit fruit : memory.fruit()) {
-            if (canReach(fruit) && !givenUp(fruit.id()) && filter.test(fruit)) {
+            if (canReach(fruit) && !givenUp(fruit.id()) && memory.conduct().allows(fruit) && filter.test(fruit)) {
                 list.add(fruit);
             }
         }
@@ -177,7 +180,7 @@ public final class Harvester {
                 return Status.FAILED;
             }
         }
-        if (memory.gone(fruit.id()) || !canReach(fruit) || givenUp(fruit.id())) {
+        if (memory.gone(fruit.id()) || !canReach(fruit) || givenUp(fruit.id()) || !memory.conduct().allows(fruit)) {
             current = null;
             return Status.FAILED;
         }

@@ -13,7 +13,7 @@ import java.util.Optional;
  * Plans paths over the remembered map for one agent's body: A* on a grid of half-unit cells
  * (eight neighbours, octile distance), around the trunks and tables the agent has seen, over the
  * river only by a bridge's deck, around where the castle is likely to be and around what rejected
- * moves taught; then straightened by pulling the path tight wherever the straight way is clear.
+ * moves taught, and out of the areas the rules a person set keep the agent out of; then straightened by pulling the path tight wherever the straight way is clear.
  * Paths keep a little room from obstacles, because perception is rounded and the server refuses a
  * move that merely overlaps a trunk.
  *
@@ -121,6 +121,7 @@ public final class PathPlanner {
         int steps = (int) Math.ceil(length / SAMPLE);
         int startCell = grid.indexOf(a);
         boolean startBlocked = grid.terrain[startCell] == TerrainGrid.BLOCKED;
+        boolean ruled = grid.avoided[startCell] == 0; // a rule's area may be left, not entered
         Point2 castle = memory.castle().located() ? memory.castle().centre().orElse(null) : null;
         double floor = castle == null ? 0 : Math.min(a.distance(castle), b.distance(castle)) - 0.3;
         for (int s = 1; s <= steps; s++) {
@@ -131,6 +132,9 @@ public final class PathPlanner {
             if (grid.terrain[cell] == TerrainGrid.BLOCKED && !(startBlocked && f * length < ESCAPE)) {
                 return false;
             }
+            if (ruled && grid.avoided[cell] != 0) {
+                return false;
+            }
             if (castle != null && grid.extra[cell] > 0 && Math.hypot(x - castle.x(), z - castle.z()) < floor) {
                 return false; // a straight stretch may skirt the castle, not cut in closer than its ends
             }
@@ -138,10 +142,13 @@ public final class PathPlanner {
         return true;
     }
 
-    /** Whether the agent's body can stand at {@code p}, keeping {@code margin} from trunks and tables. */
+    /**
+     * Whether the agent's body can stand at {@code p}, keeping {@code margin} from trunks and tables,
+     * outside the areas the rules keep it out of.
+     */
     public boolean standable(Point2 p, double margin) {
         grid.refresh();
-        if (!inside(p, 0.05) || grid.terrain[grid.indexOf(p)] == TerrainGrid.BLOCKED) {
+        if (!inside(p, 0.05) || grid.terrain[grid.indexOf(p)] == TerrainGrid.BLOCKED || grid.avoided(p)) {
             return false;
         }
         for (KnownObstacle obstacle : memory.obstacles()) {

@@ -2,6 +2,7 @@ package io.orchard.agents.behaviour;
 
 import io.orchard.agents.map.CastleEstimate;
 import io.orchard.agents.map.Circle;
+import io.orchard.agents.map.Conduct;
 import io.orchard.agents.map.KnownBridge;
 import io.orchard.agents.map.KnownObstacle;
 import io.orchard.agents.map.LearnedBlock;
@@ -20,7 +21,9 @@ import java.util.Arrays;
  * ran into). Where the agent has stood ({@link Trail}) is never blocked by the layers that are
  * guesses (the water, the castle, what refused moves taught): it stood there, so a path can lead
  * it out the way it came. Rebuilt from the memory when its terrain changes; the river layer, the
- * costliest, only when the river model changed.
+ * costliest, only when the river model changed. A separate layer marks the cells the rules a
+ * person set keep the agent out of ({@link io.orchard.agents.map.Conduct}), widened by a cell so
+ * that a path planned on the grid keeps out of them point by point.
  */
 final class TerrainGrid {
 
@@ -50,6 +53,8 @@ final class TerrainGrid {
     final byte[] terrain;
     private final byte[] wet;
     private final byte[] edge;
+    /** The cells the rules keep the agent out of: nonzero where it may not walk, unless it stands in one. */
+    final byte[] avoided;
     private long builtVersion = -1;
     private long wetVersion = -1;
 
@@ -64,6 +69,7 @@ final class TerrainGrid {
         this.terrain = new byte[nx * nz];
         this.wet = new byte[nx * nz];
         this.edge = new byte[nx * nz];
+        this.avoided = new byte[nx * nz];
         edges();
     }
 
@@ -91,6 +97,62 @@ final class TerrainGrid {
         System.arraycopy(terrain, 0, cells, 0, terrain.length);
         for (KnownObstacle obstacle : memory.obstacles()) {
             circle(obstacle.centre(), obstacle.blockRadius() + obstacle.margin());
+        }
+        rules();
+    }
+
+    /** Whether the rules keep the agent out of the cell holding this point. */
+    boolean avoided(Point2 p) {
+        return avoided[indexOf(p)] != 0;
+    }
+
+    /**
+     * The cells the rules keep the agent out of: those whose centre, or a neighbour's, is in a rule's
+     * area, looked at every other cell and every cell near an edge of an area.
+     */
+    private void rules() {
+        Arrays.fill(avoided, (byte) 0);
+        Conduct conduct = memory.conduct();
+        if (!conduct.restrictsPlaces()) {
+            return;
+        }
+        byte[] in = new byte[nx * nz];
+        for (int k = 0; k < nz; k += 2) {
+            for (int i = 0; i < nx; i += 2) {
+                int index = index(i, k);
+                in[index] = (byte) (conduct.forbids(new Point2(cx(index), cz(index))) ? 1 : 0);
+            }
+        }
+        for (int k = 0; k < nz; k++) {
+            for (int i = 0; i < nx; i++) {
+                if (i % 2 == 0 && k % 2 == 0) {
+                    continue;
+                }
+                int i0 = i - i % 2;
+                int k0 = k - k % 2;
+                int i1 = Math.min(i0 + 2, nx - 1 - (nx - 1) % 2);
+                int k1 = Math.min(k0 + 2, nz - 1 - (nz - 1) % 2);
+                byte a = in[index(i0, k0)];
+                boolean same = a == in[index(i1, k0)] && a == in[index(i0, k1)] && a == in[index(i1, k1)];
+                int index = index(i, k);
+                in[index] = same ? a : (byte) (conduct.forbids(new Point2(cx(index), cz(index))) ? 1 : 0);
+            }
+        }
+        for (int k = 0; k < nz; k++) {
+            for (int i = 0; i < nx; i++) {
+                if (in[index(i, k)] == 0) {
+                    continue;
+                }
+                for (int dk = -1; dk <= 1; dk++) {
+                    for (int di = -1; di <= 1; di++) {
+                        int ii = i + di;
+                        int kk = k + dk;
+                        if (ii >= 0 && kk >= 0 && ii < nx && kk < nz) {
+                            avoided[index(ii, kk)] = 1;
+                        }
+                    }
+                }
+            }
         }
     }
 

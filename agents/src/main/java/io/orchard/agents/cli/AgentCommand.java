@@ -10,6 +10,7 @@ import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -40,7 +41,13 @@ final class AgentCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
+
+    @Mixin
+    private NextGamesOption nextGames;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
@@ -65,20 +72,32 @@ final class AgentCommand implements Callable<Integer> {
                     + String.join(", ", new CommandLines.Type()) + ")");
         }
         String name = this.name == null ? species.agentName() : this.name;
-        AgentController agent = species.create(name);
-        resumeTokens.keep(agent);
-        languageModel.apply(agent);
-        agent.addSpeechListener(text -> out.println(name + ": " + text));
-        AgentMain.listen(console, agent::instruct);
+        AtomicReference<AgentController> agent = new AtomicReference<>(agent(name));
+        AgentMain.listen(console, text -> agent.get().instruct(text));
         out.printf(Locale.ROOT, "%s (%s) is connecting to %s:%d; type instructions for it here.%n", name,
                 species.name().toLowerCase(Locale.ROOT), server.host, server.port);
         try {
-            GameOverMessage over = agent.run(server.host, server.port, server.token);
-            AgentMain.report(over, List.of(agent), out);
-            return 0;
+            while (true) {
+                GameOverMessage over = agent.get().run(server.host, server.port, server.token);
+                AgentMain.report(over, List.of(agent.get()), out);
+                if (!nextGames.another(agent.get())) {
+                    return 0;
+                }
+                agent.set(agent(name));
+            }
         } catch (IOException | IllegalArgumentException e) {
             err.println("orchard agent: " + e.getMessage());
             return CommandLineErrors.FAILED;
         }
+    }
+
+    private AgentController agent(String name) {
+        AgentController agent = species.create(name);
+        resumeTokens.keep(agent);
+        language.apply(agent);
+        languageModel.apply(agent);
+        nextGames.apply(agent);
+        agent.addSpeechListener(text -> out.println(name + ": " + text));
+        return agent;
     }
 }

@@ -35,7 +35,13 @@ final class AgentsCommand implements Callable<Integer> {
     private ResumeTokensOption resumeTokens;
 
     @Mixin
+    private LanguageOption language;
+
+    @Mixin
     private LanguageModelOptions languageModel;
+
+    @Mixin
+    private NextGamesOption nextGames;
 
     @Option(names = {"-h", "--help"}, usageHelp = true, description = "Show this help and exit")
     private boolean help;
@@ -54,14 +60,14 @@ final class AgentsCommand implements Callable<Integer> {
     public Integer call() throws InterruptedException {
         Map<String, AgentController> byName = new LinkedHashMap<>();
         for (Species species : Species.values()) {
-            AgentController agent = species.create();
-            resumeTokens.keep(agent);
-        languageModel.apply(agent);
-            languageModel.apply(agent);
-            agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));
+            AgentController agent = agent(species);
             byName.put(agent.name().toLowerCase(Locale.ROOT), agent);
         }
-        AgentMain.listen(console, line -> AgentMain.route(line, byName, out));
+        AgentMain.listen(console, line -> {
+            synchronized (byName) {
+                AgentMain.route(line, byName, out);
+            }
+        });
         out.printf(Locale.ROOT, "%s are connecting to %s:%d; instruct one with 'Name: instruction'.%n",
                 String.join(", ", byName.values().stream().map(AgentController::name).toList()), server.host,
                 server.port);
@@ -72,8 +78,8 @@ final class AgentsCommand implements Callable<Integer> {
         });
         try {
             List<Future<GameOverMessage>> games = new ArrayList<>();
-            for (AgentController agent : byName.values()) {
-                games.add(pool.submit(() -> agent.run(server.host, server.port, server.token)));
+            for (Species species : Species.values()) {
+                games.add(pool.submit(() -> play(species, byName)));
             }
             GameOverMessage over = null;
             int status = 0;
@@ -82,16 +88,49 @@ final class AgentsCommand implements Callable<Integer> {
                     GameOverMessage one = games.get(i).get();
                     over = over == null ? one : over;
                 } catch (ExecutionException e) {
-                    AgentController agent = new ArrayList<>(byName.values()).get(i);
-                    err.println("orchard agents: " + agent.name() + ": " + e.getCause().getMessage());
+                    err.println("orchard agents: " + Species.values()[i].agentName() + ": "
+                            + e.getCause().getMessage());
                     status = CommandLineErrors.FAILED;
                 }
             }
-            AgentMain.report(over, List.copyOf(byName.values()), out);
+            synchronized (byName) {
+                AgentMain.report(over, List.copyOf(byName.values()), out);
+            }
             return status;
         } finally {
-            byName.values().forEach(AgentController::stop);
+            synchronized (byName) {
+                byName.values().forEach(AgentController::stop);
+            }
             pool.shutdownNow();
         }
+    }
+
+    /** The agent of {@code species}'s games: its first, and with --next-games each next one, by a new agent. */
+    private GameOverMessage play(Species species, Map<String, AgentController> byName) throws Exception {
+        String key = species.agentName().toLowerCase(Locale.ROOT);
+        AgentController agent;
+        synchronized (byName) {
+            agent = byName.get(key);
+        }
+        while (true) {
+            GameOverMessage over = agent.run(server.host, server.port, server.token);
+            if (!nextGames.another(agent)) {
+                return over;
+            }
+            agent = agent(species);
+            synchronized (byName) {
+                byName.put(key, agent);
+            }
+        }
+    }
+
+    private AgentController agent(Species species) {
+        AgentController agent = species.create();
+        resumeTokens.keep(agent);
+        language.apply(agent);
+        languageModel.apply(agent);
+        nextGames.apply(agent);
+        agent.addSpeechListener(text -> out.println(agent.name() + ": " + text));
+        return agent;
     }
 }

@@ -1,6 +1,8 @@
 package io.orchard.agents.errand;
 
 import io.orchard.agents.language.Ask;
+import io.orchard.agents.language.Language;
+import io.orchard.agents.language.Phrasing;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.language.Reference.Kind;
 import io.orchard.agents.map.KnownBridge;
@@ -40,6 +42,9 @@ final class Answering {
 
         /** The fruit the agent has collected, by kind. */
         Map<FruitKind, Integer> collected();
+
+        /** The rules in force, as the agent states them. */
+        String rules();
     }
 
     /** Fruit hangs in trees from this height up; below it lies on tables (or the ground). */
@@ -53,19 +58,28 @@ final class Answering {
         this.state = state;
     }
 
-    /** The answer to the question, one or two short sentences. */
+    private boolean de() {
+        return kit.language == Language.GERMAN;
+    }
+
+    /** The answer to the question, one or two short sentences, in the language spoken. */
     String answer(Ask ask) {
         return switch (ask.topic()) {
             case SEE -> ask.about() == null ? sight() : seeing(ask.about());
-            case WHERE -> "I'm " + whereabouts(kit.here()) + ".";
+            case WHERE -> (de() ? "Ich bin " : "I'm ") + whereabouts(kit.here()) + ".";
             case COLLECTED -> collected(ask.about());
             case DOING -> doing();
             case WHY -> why();
             case WHERE_IS -> whereIs(ask.about());
-            case CAN -> "I can go to places, cross the river, collect fruit, explore, follow other agents, turn, "
+            case CAN -> de() ? "Ich kann zu Orten gehen, den Fluss überqueren, Früchte sammeln, erkunden, anderen "
+                    + "Agenten folgen, mich drehen, warten und anhalten; und du kannst mich fragen, was ich sehe, wo ich "
+                    + "bin, was ich gesammelt habe, was ich mache und warum, und wo Dinge sind."
+                    : "I can go to places, cross the river, collect fruit, explore, follow other agents, turn, "
                     + "wait and stop; and you can ask me what I see, where I am, what I have collected, what I'm "
                     + "doing and why, and where things are.";
-            case HEADING -> "I'm facing " + compass(kit.motor.heading()) + ".";
+            case HEADING -> de() ? "Ich schaue nach " + kit.speech.compass(compass(kit.motor.heading())) + "."
+                    : "I'm facing " + compass(kit.motor.heading()) + ".";
+            case RULES -> state.rules();
         };
     }
 
@@ -76,8 +90,9 @@ final class Answering {
         List<KnownFruit> fruit = inSight();
         if (!fruit.isEmpty()) {
             KnownFruit nearest = fruit.get(0);
-            parts.add(counted(fruit) + " (the nearest " + fruitWords(nearest) + ", "
-                    + Grounder.bearingWords(here, nearest.ground()) + ")");
+            kit.mention(Known.fruit(nearest));
+            parts.add(counted(fruit) + (de() ? " (die nächste " : " (the nearest ") + fruitWords(nearest) + ", "
+                    + kit.speech.bearing(here, nearest.ground()) + ")");
         }
         double range = memory.sight().range();
         long trees = memory.obstacles().stream().filter(KnownObstacle::isTree)
@@ -85,10 +100,11 @@ final class Answering {
         long tables = memory.obstacles().stream().filter(o -> !o.isTree())
                 .filter(o -> o.centre().distance(here) <= range).count();
         if (trees > 0) {
-            parts.add(trees == 1 ? "a tree" : trees + " trees");
+            parts.add(de() ? (trees == 1 ? "einen Baum" : trees + " Bäume") : trees == 1 ? "a tree" : trees + " trees");
         }
         if (tables > 0) {
-            parts.add(tables == 1 ? "a table" : tables + " tables");
+            parts.add(de() ? (tables == 1 ? "einen Tisch" : tables + " Tische")
+                    : tables == 1 ? "a table" : tables + " tables");
         }
         for (SeenAgent agent : memory.agents()) {
             if (agent.tick() == memory.tick()) {
@@ -96,13 +112,13 @@ final class Answering {
             }
         }
         kit.grounder.castle().filter(c -> c.distance(here) <= range)
-                .ifPresent(c -> parts.add("the castle " + Grounder.bearingWords(here, c)));
+                .ifPresent(c -> parts.add((de() ? "das Schloss " : "the castle ") + kit.speech.bearing(here, c)));
         nearestShore().filter(s -> s.distance(here) <= range)
-                .ifPresent(s -> parts.add("the river " + Grounder.bearingWords(here, s)));
+                .ifPresent(s -> parts.add((de() ? "den Fluss " : "the river ") + kit.speech.bearing(here, s)));
         if (parts.isEmpty()) {
-            return "I see nothing but open ground.";
+            return de() ? "Ich sehe nichts als offenes Gelände." : "I see nothing but open ground.";
         }
-        return "I see " + list(parts) + ".";
+        return (de() ? "Ich sehe " : "I see ") + kit.speech.list(parts) + ".";
     }
 
     private String seeing(Reference about) {
@@ -110,10 +126,11 @@ final class Answering {
         if (about.isFruit()) {
             List<KnownFruit> fruit = inSight().stream().filter(f -> about.kind().matches(f.kind())).toList();
             if (!fruit.isEmpty()) {
-                return "Yes: " + counted(fruit) + ", the nearest " + Grounder.bearingWords(here, fruit.get(0).ground())
-                        + ".";
+                return (de() ? "Ja: " : "Yes: ") + counted(fruit) + (de() ? ", die nächste " : ", the nearest ")
+                        + kit.speech.bearing(here, fruit.get(0).ground()) + ".";
             }
-            return "No, I don't see " + Restated.bare(about.withDistance(null)) + " now. " + whereIs(about);
+            return (de() ? "Nein, ich sehe gerade keine " : "No, I don't see ")
+                    + kit.speech.bare(about.withDistance(null)) + (de() ? ". " : " now. ") + whereIs(about);
         }
         Grounding grounding = kit.grounder.ground(about);
         List<Known> known = grounding instanceof Grounding.Found found ? found.matches()
@@ -121,78 +138,102 @@ final class Answering {
         double range = kit.memory.sight().range();
         Optional<Known> seen = known.stream().filter(k -> k.where().distance(here) <= range + k.size()).findFirst();
         if (seen.isPresent()) {
-            return "Yes: " + Restated.thing(seen.get()) + ", " + Grounder.bearingWords(here, seen.get().where()) + ".";
+            kit.mention(seen.get());
+            return (de() ? "Ja: " : "Yes: ") + kit.speech.thing(seen.get()) + ", "
+                    + kit.speech.bearing(here, seen.get().where()) + ".";
         }
-        return "No, not from here. " + whereIs(about);
+        return (de() ? "Nein, nicht von hier aus. " : "No, not from here. ") + whereIs(about);
     }
 
     private String collected(Reference about) {
         Map<FruitKind, Integer> collected = state.collected();
         if (about != null && about.kind().fruitKind() != null) {
             int n = collected.getOrDefault(about.kind().fruitKind(), 0);
-            return n == 0 ? "I haven't collected any " + plural(about.kind().fruitKind()) + " yet."
-                    : "I have collected " + count(n, about.kind().fruitKind()) + ".";
+            if (de()) {
+                return n == 0 ? "Ich habe noch keine " + kit.speech.plural(about.kind().fruitKind()) + " gesammelt."
+                        : "Ich habe " + kit.speech.count(n, about.kind().fruitKind()) + " gesammelt.";
+            }
+            return n == 0 ? "I haven't collected any " + kit.speech.plural(about.kind().fruitKind()) + " yet."
+                    : "I have collected " + kit.speech.count(n, about.kind().fruitKind()) + ".";
         }
         List<String> parts = new ArrayList<>();
         int total = 0;
         for (FruitKind kind : FruitKind.values()) {
             int n = collected.getOrDefault(kind, 0);
             if (n > 0) {
-                parts.add(count(n, kind));
+                parts.add(kit.speech.count(n, kind));
                 total += n;
             }
         }
         if (total == 0) {
-            return "I haven't collected any fruit yet.";
+            return de() ? "Ich habe noch keine Früchte gesammelt." : "I haven't collected any fruit yet.";
         }
-        return "I have collected " + total + (total == 1 ? " fruit: " : " fruits: ") + list(parts) + ".";
+        if (de()) {
+            return "Ich habe " + total + (total == 1 ? " Frucht gesammelt: " : " Früchte gesammelt: ")
+                    + kit.speech.list(parts) + ".";
+        }
+        return "I have collected " + total + (total == 1 ? " fruit: " : " fruits: ") + kit.speech.list(parts) + ".";
     }
 
     private String doing() {
         String doing = state.doing();
         if (doing != null) {
-            return "I'm " + doing + ", because you asked me to.";
+            return de() ? capital(doing) + ", weil du mich darum gebeten hast."
+                    : "I'm " + doing + ", because you asked me to.";
         }
         if (state.stopped()) {
-            return "I'm standing still, because you told me to stop.";
+            return de() ? "Ich stehe still, weil du mir gesagt hast, dass ich anhalten soll."
+                    : "I'm standing still, because you told me to stop.";
         }
-        return "Nothing you asked: I'm on my own, looking for fruit to collect, because that is what I do when no one "
-                + "tells me otherwise.";
+        return de() ? "Nichts, worum du gebeten hast: Ich bin auf mich gestellt und suche Früchte, weil ich das tue, wenn "
+                + "mir niemand etwas anderes sagt." : "Nothing you asked: I'm on my own, looking for fruit to collect, "
+                + "because that is what I do when no one tells me otherwise.";
     }
 
     private String why() {
         if (state.stopped()) {
-            return "You told me to stop; tell me what to do, or say 'carry on'.";
+            return de() ? "Du hast mir gesagt, dass ich anhalten soll; sag mir, was ich tun soll, oder sag 'mach weiter'."
+                    : "You told me to stop; tell me what to do, or say 'carry on'.";
         }
         String doing = state.doing();
         if (doing != null) {
-            return "I haven't stopped: I'm " + doing + ".";
+            return de() ? "Ich habe nicht angehalten: " + doing + "." : "I haven't stopped: I'm " + doing + ".";
         }
         String last = state.lastOutcome();
         if (!last.isEmpty()) {
-            return "My last errand ended so: " + last;
+            return (de() ? "Mein letzter Auftrag endete so: " : "My last errand ended so: ") + last;
         }
-        return "Nothing stopped me; I'm on my own, looking for fruit to collect.";
+        return de() ? "Nichts hat mich angehalten; ich bin auf mich gestellt und suche Früchte."
+                : "Nothing stopped me; I'm on my own, looking for fruit to collect.";
     }
 
     private String whereIs(Reference about) {
         Point2 here = kit.here();
         if (about.kind() == Kind.START) {
-            return "Where I started is " + Grounder.bearingWords(here, kit.grounder.start()) + ".";
+            return (de() ? "Wo ich angefangen habe, ist " : "Where I started is ")
+                    + kit.speech.bearing(here, kit.grounder.start()) + ".";
         }
         List<Known> fits = kit.grounder.fitting(about);
-        if (fits.isEmpty()) {
-            return "I don't know of " + (about.isFruit() ? "any " + Restated.bare(about.withDistance(null)) : about.words())
-                    + " yet.";
+        List<Known> chosen = fits.isEmpty() ? fits : kit.grounder.select(about, fits);
+        if (chosen.isEmpty()) {
+            if (de()) {
+                return about.isFruit() ? "Ich kenne noch keine " + kit.speech.bare(about.withDistance(null)) + "."
+                        : "Ich weiß noch nicht, wo " + Phrasing.noun(about, Language.GERMAN, Phrasing.Case.NOMINATIVE)
+                        + " ist.";
+            }
+            return "I don't know of " + (about.isFruit() && fits.isEmpty() ? "any "
+                    + kit.speech.bare(about.withDistance(null)) : about.words()) + " yet.";
         }
-        List<Known> chosen = kit.grounder.select(about, fits);
         Known first = chosen.get(0);
-        String at = Grounder.bearingWords(here, first.where());
+        kit.mention(first);
+        String at = kit.speech.bearing(here, first.where());
         if (about.isFruit() && chosen.size() > 1) {
-            return "I know of " + chosen.size() + "; the nearest is " + at + ", " + whereabouts(first.where()) + ".";
+            return de() ? "Ich kenne " + chosen.size() + "; die nächste ist " + at + ", " + whereabouts(first.where())
+                    + "." : "I know of " + chosen.size() + "; the nearest is " + at + ", " + whereabouts(first.where())
+                    + ".";
         }
-        return (first.kind() == Kind.AGENT ? first.id() : capital(Restated.thing(first))) + " is " + at + ", "
-                + whereabouts(first.where()) + ".";
+        return (first.kind() == Kind.AGENT ? first.id() : capital(kit.speech.thing(first))) + (de() ? " ist " : " is ")
+                + at + ", " + whereabouts(first.where()) + ".";
     }
 
     /** Where a point is, in the world's words: "north of the river, near the castle, by the bridge B2". */
@@ -201,22 +242,24 @@ final class Answering {
         Optional<Point2> shore = nearestShore();
         RiverMap.Side side = kit.memory.river().side(p.x(), p.z(), 0);
         if (side == RiverMap.Side.WATER) {
-            parts.add("in the river");
+            parts.add(de() ? "im Fluss" : "in the river");
         } else if (shore.isPresent() && (side == RiverMap.Side.LOW || side == RiverMap.Side.HIGH)) {
-            parts.add(Grounder.compass(shore.get(), p) + " of the river");
+            parts.add(kit.speech.compassOf(Grounder.compass(shore.get(), p)) + (de() ? " des Flusses" : " of the river"));
         }
         kit.grounder.castle().ifPresent(castle -> parts.add(castle.distance(p) <= Grounder.CASTLE_SIZE + Grounder.NEAR
-                ? "near the castle" : Grounder.compass(castle, p) + " of the castle"));
+                ? (de() ? "in der Nähe des Schlosses" : "near the castle")
+                : kit.speech.compassOf(Grounder.compass(castle, p)) + (de() ? " des Schlosses" : " of the castle")));
         kit.memory.bridges().stream().min(Comparator.comparingDouble((KnownBridge b) -> b.middle().distance(p)))
                 .filter(b -> b.middle().distance(p) <= b.length() / 2 + Grounder.NEAR)
-                .ifPresent(b -> parts.add("by the bridge " + b.id()));
+                .ifPresent(b -> parts.add((de() ? "bei der Brücke " : "by the bridge ") + b.id()));
         boolean forest = kit.memory.obstacles().stream().filter(KnownObstacle::isTree)
                 .filter(t -> t.centre().distance(p) <= t.radius() + 4).count() >= 2;
         if (forest) {
-            parts.add("in the forest");
+            parts.add(de() ? "im Wald" : "in the forest");
         }
         if (parts.isEmpty()) {
-            return String.format(Locale.ROOT, "at x %.0f, z %.0f, and I know no landmark near", p.x(), p.z());
+            return String.format(Locale.ROOT, de() ? "bei x %.0f, z %.0f, und ich kenne keine Landmarke in der Nähe"
+                    : "at x %.0f, z %.0f, and I know no landmark near", p.x(), p.z());
         }
         return String.join(", ", parts);
     }
@@ -233,32 +276,29 @@ final class Answering {
                 .min(Comparator.comparingDouble(s -> s.distance(here)));
     }
 
-    private static String counted(List<KnownFruit> fruit) {
+    private String counted(List<KnownFruit> fruit) {
         List<String> parts = new ArrayList<>();
         for (FruitKind kind : FruitKind.values()) {
             int n = (int) fruit.stream().filter(f -> f.kind() == kind).count();
             if (n > 0) {
-                parts.add(count(n, kind));
+                parts.add(kit.speech.count(n, kind));
             }
         }
-        return list(parts);
+        return kit.speech.list(parts);
     }
 
-    private static String fruitWords(KnownFruit fruit) {
+    private String fruitWords(KnownFruit fruit) {
+        if (de()) {
+            String kind = Phrasing.noun(Reference.to(Kind.valueOf(fruit.kind().name())), Language.GERMAN,
+                    Phrasing.Case.NOMINATIVE).replaceFirst("^eine ", "");
+            return kind + (fruit.support() == null ? " auf dem Boden" : fruit.height() > TREE_LOW ? " in einem Baum"
+                    : " auf einem Tisch");
+        }
         String kind = fruit.kind().name().toLowerCase(Locale.ROOT);
         if (fruit.support() == null) {
             return kind + " on the ground";
         }
         return kind + (fruit.height() > TREE_LOW ? " in a tree" : " on a table");
-    }
-
-    private static String count(int n, FruitKind kind) {
-        return n == 1 ? (kind == FruitKind.TOMATO ? "a tomato" : "a " + kind.name().toLowerCase(Locale.ROOT))
-                : n + " " + plural(kind);
-    }
-
-    private static String plural(FruitKind kind) {
-        return kind == FruitKind.TOMATO ? "tomatoes" : kind.name().toLowerCase(Locale.ROOT) + "s";
     }
 
     /** The compass direction a heading faces: "north-east". */
@@ -270,10 +310,4 @@ final class Answering {
         return Character.toUpperCase(text.charAt(0)) + text.substring(1);
     }
 
-    private static String list(List<String> parts) {
-        if (parts.size() == 1) {
-            return parts.get(0);
-        }
-        return String.join(", ", parts.subList(0, parts.size() - 1)) + " and " + parts.get(parts.size() - 1);
-    }
 }

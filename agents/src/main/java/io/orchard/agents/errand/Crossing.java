@@ -7,10 +7,12 @@ import io.orchard.agents.map.RiverMap;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
 import java.util.Comparator;
+import java.util.Optional;
 
 /**
  * Crossing the river by a bridge: the bridge the person chose or named ("the nearest bridge"), else
- * the one of the shortest way. The agent walks over it to a point a few steps beyond its far end;
+ * the one of the shortest way. The agent walks onto it at its near end, and over it to a point a few
+ * steps beyond its far end;
  * the crossing is done when it stands on the other bank from the one it started on. A bridge not
  * yet known is looked for first.
  */
@@ -25,6 +27,8 @@ final class Crossing implements Pursuit {
     private KnownBridge bridge;
     private RiverMap.Side from;
     private Point2 destination;
+    private Point2 entry;
+    private boolean onto;
     private String outcome = "";
 
     Crossing(Kit kit, Reference landmark, @Nullable Known chosen) {
@@ -64,17 +68,38 @@ final class Crossing implements Pursuit {
             } else {
                 destination = here.distance(pastA) >= here.distance(pastB) ? pastA : pastB;
             }
+            entry = destination == pastA ? bridge.entryB() : bridge.entryA();
+            kit.mention(new Known(Reference.Kind.BRIDGE, bridge.id(), bridge.middle(), bridge.length() / 2, null,
+                    bridge));
+            Optional<String> rule = kit.forbidden(destination);
+            if (rule.isPresent()) {
+                outcome = kit.speech.wontCross(rule.get());
+                return Status.FAILED;
+            }
+        }
+        if (!onto) {
+            // onto the deck first: the shortest way to the far bank may lead over the other bridge
+            Status toEntry = kit.navigator.goTo(entry, 1.5);
+            onto = toEntry == Status.DONE || bridge.covers(here, 0, 0.5);
+            if (toEntry == Status.FAILED) {
+                outcome = kit.speech.noWayOnto(bridge.id());
+                return Status.FAILED;
+            }
+            if (!onto) {
+                return Status.RUNNING;
+            }
+            kit.navigator.reset();
         }
         Status status = kit.navigator.goTo(destination, 1.2);
         if (status == Status.FAILED) {
-            outcome = "I can't find a way over the bridge " + bridge.id() + ".";
+            outcome = kit.speech.noWayOver(bridge.id());
             return status;
         }
         RiverMap.Side now = kit.grounder.side(here);
         if (status == Status.DONE || (from != null && now != from && now != RiverMap.Side.WATER
                 && now != RiverMap.Side.UNKNOWN && here.distance(bridge.middle()) > bridge.length() / 2 + 1)) {
             kit.standStill();
-            outcome = "I'm on the other side of the river, over the bridge " + bridge.id() + ".";
+            outcome = kit.speech.otherSide(bridge.id());
             return Status.DONE;
         }
         return Status.RUNNING;

@@ -9,16 +9,20 @@ import io.orchard.agents.language.CarryOn;
 import io.orchard.agents.language.Collect;
 import io.orchard.agents.language.ComeBack;
 import io.orchard.agents.language.Cross;
+import io.orchard.agents.language.Discourse;
 import io.orchard.agents.language.Explore;
 import io.orchard.agents.language.Face;
 import io.orchard.agents.language.Follow;
 import io.orchard.agents.language.Goal;
 import io.orchard.agents.language.GoTo;
 import io.orchard.agents.language.Head;
+import io.orchard.agents.language.Language;
+import io.orchard.agents.language.Lift;
 import io.orchard.agents.language.LookAt;
 import io.orchard.agents.language.LookFor;
 import io.orchard.agents.language.RelativeMove;
 import io.orchard.agents.language.Reference;
+import io.orchard.agents.language.Rule;
 import io.orchard.agents.language.Sequence;
 import io.orchard.agents.language.Stop;
 import io.orchard.agents.language.Turn;
@@ -29,8 +33,11 @@ import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Point2;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Deque;
+import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 
 /**
@@ -51,6 +58,14 @@ import java.util.Optional;
  *   <li>The body cannot do it (a bunny asked for a coconut in a tree): the agent says why and
  *       drops that goal.
  *   <li>Over: the agent says how it went and, after the last step, that it carries on by itself.
+ *   <li>A rule ({@link Rule}: "don't go near the river", "only bananas from now on") is taken on at
+ *       once and holds until lifted ({@link Lift}), for the errands and for the agent's own behaviour
+ *       alike (it goes into the memory's {@link io.orchard.agents.map.Conduct}); the errand under way
+ *       goes on under it. An errand that would break a rule is refused, naming it. An agent that finds
+ *       itself where a rule keeps it out of leaves first.
+ *   <li>A condition ({@link io.orchard.agents.language.WhenSee}: "when you see a banana, take it")
+ *       is acted on whenever it comes true while no errand has the agent: the agent says what it saw
+ *       and does what it was told for that very thing.
  * </ul>
  *
  * <p>The controller calls {@link #take(Goal)} for each instruction and {@link #step()} every tick
@@ -61,8 +76,6 @@ public final class Errands {
 
     /** How long the agent waits for the answer to a question before it takes the nearest choice. */
     public static final double ANSWER_SECONDS = 30;
-
-    private static final String CARRYING_ON = " Carrying on by myself.";
 
     private final Kit kit;
     private final Deque<Goal> steps = new ArrayDeque<>();
@@ -76,6 +89,8 @@ public final class Errands {
     private boolean stopped;
     private String lastOutcome = "";
     private final Answering answering;
+    private final Rulebook rulebook;
+    private String leaving;
 
     /** Errands for the agent {@code motor} drives and {@code memory} remembers for. */
     public Errands(WorldMemory memory, Motor motor) {
@@ -85,6 +100,7 @@ public final class Errands {
     /** Errands that plan their ways with the agent's own {@code planner}, shared with its other behaviours. */
     public Errands(WorldMemory memory, Motor motor, PathPlanner planner) {
         this.kit = new Kit(memory, motor, planner);
+        this.rulebook = new Rulebook(kit);
         this.origin = memory.position();
         this.previousOrigin = origin;
         this.answering = new Answering(kit, new Answering.State() {
@@ -107,19 +123,53 @@ public final class Errands {
             public Map<FruitKind, Integer> collected() {
                 return memory.collected();
             }
+
+            @Override
+            public String rules() {
+                return rulebook.statements();
+            }
         });
+    }
+
+    /** The rules in force, oldest first: what the person set and has not lifted. */
+    public List<Rule> rules() {
+        return rulebook.rules();
+    }
+
+    /**
+     * What the agent spoke about or looked at last, most recent first: the things its errands went
+     * to, turned to, chose or named in answers, for "that table" and "it" in what it is told next.
+     */
+    public Discourse discourse() {
+        return kit.discourse();
     }
 
     /** What the agent does for the person, in the words of its restatement ("going to the castle"); null when nothing. */
     private @Nullable String doing() {
         if (question != null) {
-            return "waiting for your answer: " + question.text();
+            return kit.speech.waitingForAnswer(question.text());
+        }
+        if (leaving != null) {
+            return leaving;
         }
         if (goal == null || pursuit == null || goal instanceof Stop) {
             return null;
         }
-        String restated = goal.restatement();
+        String restated = goal.restatement(kit.language);
         return Character.toLowerCase(restated.charAt(0)) + restated.substring(1, restated.length() - 1);
+    }
+
+    /**
+     * Answers in this language from now on, as the sentence just heard was in it: what the agent says
+     * back, says as it goes and answers to questions.
+     */
+    public void speak(Language language) {
+        kit.language = Objects.requireNonNull(language, "language");
+    }
+
+    /** The language the agent answers in. */
+    public Language language() {
+        return kit.language;
     }
 
     /** The harvester the errands collect with: set its gesture to animate the grasp. */
@@ -151,6 +201,36 @@ public final class Errands {
             kit.motor.say(answering.answer(ask)); // a question leaves the errand as it was
             return;
         }
+        List<Goal> all = instructed instanceof Sequence sequence ? sequence.steps() : List.of(instructed);
+        if (all.stream().allMatch(Errands::standing)) {
+            List<String> said = new ArrayList<>();
+            for (Goal rule : all) {
+                said.add(standing(rule, false)); // a rule leaves the errand going, under it
+            }
+            kit.motor.say(String.join(" ", said));
+            return;
+        }
+        start(instructed);
+    }
+
+    /** Whether a goal is a rule or lifts one: taken on at once, without an errand of its own. */
+    private static boolean standing(Goal goal) {
+        return goal instanceof Rule || goal instanceof Lift;
+    }
+
+    /** Takes on or lifts a rule; what the agent says of it, or, when {@code quiet}, only what its restatement did not say. */
+    private String standing(Goal goal, boolean quiet) {
+        String said = goal instanceof Lift lift ? rulebook.lift(lift) : rulebook.take((Rule) goal);
+        if (!quiet) {
+            return said;
+        }
+        String restated = goal.restatement(kit.language);
+        return said.startsWith(restated) ? said.substring(restated.length()).strip() : said;
+    }
+
+    /** Starts a goal of the person's, or of a condition come true, in place of any other. */
+    private void start(Goal instructed) {
+        leaving = null;
         question = null;
         stopped = instructed instanceof Stop;
         stepsStarted = 0;
@@ -162,7 +242,7 @@ public final class Errands {
         previousOrigin = origin;
         origin = kit.here();
         if (instructed instanceof CarryOn) {
-            kit.motor.say(instructed.restatement());
+            kit.motor.say(instructed.restatement(kit.language));
             return;
         }
         if (instructed instanceof Stop) {
@@ -174,8 +254,8 @@ public final class Errands {
             steps.add(instructed);
         }
         String refused = refusal(steps.peek());
-        if (refused == null && ambiguity(steps.peek()) == null) {
-            kit.motor.say(instructed.restatement());
+        if (refused == null && (standing(steps.peek()) || ambiguity(steps.peek()) == null)) {
+            kit.motor.say(instructed.restatement(kit.language));
         }
         next();
     }
@@ -194,7 +274,7 @@ public final class Errands {
         if (picked.isEmpty()) {
             return false;
         }
-        resolve(picked.get(), "All right, " + Restated.thing(picked.get()) + ".");
+        resolve(picked.get(), kit.speech.allRight(picked.get()));
         return true;
     }
 
@@ -210,11 +290,23 @@ public final class Errands {
      *         own behaviour may act
      */
     public boolean step() {
+        if (question == null && pursuit == null && !stopped && kit.memory.conduct().restrictsPlaces()
+                && kit.memory.conduct().forbids(kit.here())) {
+            leave(); // where a rule keeps it out of: out first
+        }
+        if (question == null && pursuit == null && !stopped) {
+            Watching.Seen seen = rulebook.watching().next();
+            if (seen != null) {
+                kit.mention(seen.thing());
+                kit.motor.say(kit.speech.seenSoAsTold(seen.thing()));
+                start(seen.goal());
+            }
+        }
         if (question != null) {
             kit.standStill();
             if (kit.motor.time() - askedAt >= ANSWER_SECONDS) {
                 Known nearest = question.read("1").orElseThrow();
-                resolve(nearest, "No answer: I'll take the nearest, " + Restated.thing(nearest) + ".");
+                resolve(nearest, kit.speech.noAnswer(nearest));
             }
             return true;
         }
@@ -229,9 +321,10 @@ public final class Errands {
         lastOutcome = outcome;
         pursuit = null;
         goal = null;
+        leaving = null;
         kit.navigator.reset();
         if (steps.isEmpty()) {
-            kit.motor.say(outcome + CARRYING_ON);
+            kit.motor.say(outcome + kit.speech.carryingOn());
         } else {
             if (!outcome.isEmpty()) {
                 kit.motor.say(outcome);
@@ -247,17 +340,24 @@ public final class Errands {
     private void next() {
         while (!steps.isEmpty()) {
             Goal step = steps.poll();
+            if (standing(step)) {
+                String said = standing(step, true); // the restatement of the instruction said it
+                if (!said.isEmpty()) {
+                    kit.motor.say(said);
+                }
+                continue;
+            }
             String refused = refusal(step);
             if (refused != null) {
                 lastOutcome = refused;
-                kit.motor.say(refused + (steps.isEmpty() ? "" : " I'll go on with the rest."));
+                kit.motor.say(refused + (steps.isEmpty() ? "" : kit.speech.goOnWithTheRest()));
                 continue;
             }
             Reference asked = ambiguity(step);
             if (asked != null) {
                 Grounding grounding = kit.grounder.ground(asked);
                 question = new Question(step, asked.kind(), ((Grounding.Ambiguous) grounding).choices(), kit.memory,
-                        kit.grounder);
+                        kit.grounder, kit.speech);
                 askedAt = kit.motor.time();
                 goal = step;
                 kit.motor.say(question.text());
@@ -270,7 +370,22 @@ public final class Errands {
         }
     }
 
+    /** Walks out of the area a rule keeps the agent out of, to the nearest place it may stand. */
+    private void leave() {
+        Optional<String> rule = kit.forbidden(kit.here());
+        Optional<Point2> out = kit.nearestAllowed();
+        if (rule.isEmpty() || out.isEmpty()) {
+            return;
+        }
+        leaving = kit.speech.leavingArea(rule.get());
+        kit.motor.say(kit.speech.imWhereRuleKeepsMeOut(rule.get()));
+        stepsStarted = 0;
+        steps.clear();
+        pursuit = WalkPursuit.to(kit, out.get(), kit.speech.outOfIt());
+    }
+
     private void resolve(Known chosen, String said) {
+        kit.mention(chosen);
         Goal step = question.goal();
         question = null;
         kit.motor.say(said);
@@ -278,12 +393,15 @@ public final class Errands {
         pursuit = pursuit(step, chosen);
     }
 
-    /** Why the body cannot do this goal at all; null when it may. */
+    /** Why the body cannot do this goal at all, or the rules forbid it; null when it may. */
     private String refusal(Goal step) {
         if (step instanceof Collect collect) {
-            return FruitHeights.refusal(collect.what(), kit.motor.body().gripper(), collect.what().words());
+            String unreachable = FruitHeights.refusal(collect.what(), kit.motor.body().gripper(), kit.speech);
+            if (unreachable != null) {
+                return unreachable;
+            }
         }
-        return null;
+        return rulebook.refusal(step);
     }
 
     /** The reference of this goal that fits several landmarks with nothing to choose between them; null when none. */
@@ -307,7 +425,7 @@ public final class Errands {
         double heading = kit.motor.heading();
         if (step instanceof GoTo goTo) {
             if (goTo.destination().kind() == Reference.Kind.START) {
-                return WalkPursuit.to(kit, kit.grounder.start(), "I'm back where I started.");
+                return WalkPursuit.to(kit, kit.grounder.start(), kit.speech.backWhereStarted());
             }
             return goTo.destination().kind() == Reference.Kind.PLACE ? new GoingToPlace(kit, goTo.destination())
                     : new GoingTo(kit, goTo.destination(), chosen);
@@ -336,7 +454,7 @@ public final class Errands {
         }
         if (step instanceof ComeBack) {
             // after other steps of the same instruction, back to where it was given; else to where the one before was
-            return WalkPursuit.to(kit, stepsStarted > 1 ? origin : previousOrigin, "I'm back.");
+            return WalkPursuit.to(kit, stepsStarted > 1 ? origin : previousOrigin, kit.speech.back());
         }
         if (step instanceof Collect collect) {
             return new Gathering(kit, collect);
@@ -380,6 +498,6 @@ public final class Errands {
         Point2 here = kit.here();
         Point2 tree = found.chosen().where();
         Point2 beyond = Bearings.ahead(tree, Bearings.headingTowards(here, tree), Math.max(10, here.distance(tree)));
-        return WalkPursuit.to(kit, beyond, "Done: I went through the forest.");
+        return WalkPursuit.to(kit, beyond, kit.speech.throughTheForest());
     }
 }

@@ -41,7 +41,7 @@ final class Following implements Pursuit {
                 .min(Comparator.comparingDouble(a -> a.position().distance(here)));
         if (seen.isEmpty()) {
             if (!Double.isNaN(lastSeen) && kit.motor.time() - lastSeen > LOST_SECONDS) {
-                outcome = "I've lost sight of " + name + ".";
+                outcome = kit.speech.lostSight(name);
                 return Status.FAILED;
             }
             if (Double.isNaN(lastSeen)) {

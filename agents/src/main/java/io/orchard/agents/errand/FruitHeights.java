@@ -1,10 +1,11 @@
 package io.orchard.agents.errand;
 
+import io.orchard.agents.language.Language;
+import io.orchard.agents.language.Phrasing;
 import io.orchard.agents.language.Place;
 import io.orchard.agents.language.Reference;
 import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.Nullable;
-import java.util.Locale;
 
 /**
  * Whether the body can collect fruit at all where the words put it: a bunny, eating from the
@@ -16,26 +17,25 @@ final class FruitHeights {
 
     private FruitHeights() {}
 
-    /** Heights of fruit centres in one kind of place. */
-    private record Band(String where, double low, double high) {}
+    /** Heights of fruit centres in one kind of place, and where that is, in English and in German. */
+    private record Band(String where, String wo, double low, double high) {}
 
-    private static final Band GROUND = new Band("lies on the ground", 0.15, 0.35);
-    private static final Band TABLE = new Band("lies on a table", 0.85, 1.35);
-    private static final Band TREE = new Band("hangs in a tree", 1.5, 3.0);
+    private static final Band GROUND = new Band("lies on the ground", "auf dem Boden liegen", 0.15, 0.35);
+    private static final Band TABLE = new Band("lies on a table", "auf einem Tisch liegen", 0.85, 1.35);
+    private static final Band TREE = new Band("hangs in a tree", "in einem Baum hängen", 1.5, 3.0);
 
     /**
-     * Why the gripper cannot take any fruit the reference describes; null when it may.
-     *
-     * @param words the fruit in words, for the answer ("a coconut that hangs in a tree")
+     * Why the gripper cannot take any fruit the reference describes, in the language spoken; null when
+     * it may.
      */
-    static @Nullable String refusal(Reference what, Gripper gripper, String words) {
+    static @Nullable String refusal(Reference what, Gripper gripper, Speech speech) {
         Band band = band(what.place());
         if (band == null || (gripper.maxHeight() >= band.low() && gripper.minHeight() <= band.high())) {
             return null;
         }
-        return String.format(Locale.ROOT, "I can't pick up %s: fruit that %s is %.2f to %.2f high, and my %s"
-                        + " reaches only from %.2f to %.2f.", words, band.where(), band.low(), band.high(),
-                gripper.part(), gripper.minHeight(), gripper.maxHeight());
+        boolean german = speech.language() == Language.GERMAN;
+        String words = Phrasing.noun(what, speech.language(), Phrasing.Case.ACCUSATIVE);
+        return speech.outOfReach(words, german ? band.wo() : band.where(), band.low(), band.high(), gripper);
     }
 
     private static Band band(@Nullable Place place) {

@@ -21,7 +21,6 @@ final class Gathering implements Pursuit {
     private final Looking looking;
     private KnownFruit fruit;
     private int collected;
-    private String last;
     private String outcome = "";
 
     Gathering(Kit kit, Collect goal) {
@@ -38,30 +37,39 @@ final class Gathering implements Pursuit {
         if (fruit == null) {
             fruit = choose();
             kit.navigator.reset();
+            if (fruit != null) {
+                kit.mention(Known.fruit(fruit));
+            }
+        }
+        if (fruit == null && collected == 0 && goal.what().id() != null) {
+            String why = cannot(goal.what().id());
+            if (why != null) {
+                outcome = why; // the very fruit meant, known, and out of reach or against a rule
+                return Status.FAILED;
+            }
         }
         if (fruit == null) {
             if (goal.isAll() && collected > 0) {
-                outcome = "Done: I collected " + collected + " and know of no more " + Restated.bare(goal.what()) + ".";
+                outcome = kit.speech.collectedAndNoMore(collected, goal.what());
                 return Status.DONE;
             }
             Status status = looking.step();
             if (status == Status.FAILED) {
-                outcome = collected > 0 ? "I collected " + collected + ", and found no more "
-                        + Restated.bare(goal.what()) + "." : looking.failure();
+                outcome = collected > 0 ? kit.speech.collectedAndFoundNoMore(collected, goal.what()) : looking.failure();
             }
             return status;
         }
         Status status = kit.harvester.collect(fruit);
         if (status == Status.DONE) {
             collected++;
-            last = fruit.kind().wireName() + " " + fruit.id();
+            KnownFruit taken = fruit;
             fruit = null;
             if (!goal.isAll() && collected >= goal.count()) {
-                outcome = collected == 1 ? "Done: I picked up the " + last + "."
-                        : "Done: I collected " + collected + ", the last the " + last + ".";
+                outcome = collected == 1 ? kit.speech.pickedUp(taken.kind(), taken.id())
+                        : kit.speech.collectedLast(collected, taken.kind(), taken.id());
                 return Status.DONE;
             }
-            kit.motor.say("Got the " + last + (goal.isAll() ? "." : "; " + (goal.count() - collected) + " to go."));
+            kit.motor.say(kit.speech.got(taken.kind(), taken.id(), goal.isAll() ? -1 : goal.count() - collected));
         } else if (status == Status.FAILED) {
             fruit = null; // out of reach after all: another one
         }
@@ -71,6 +79,18 @@ final class Gathering implements Pursuit {
     @Override
     public String outcome() {
         return outcome;
+    }
+
+    /** Why the agent cannot take the fruit of this id it knows of; null when it can, or does not know it. */
+    private String cannot(String id) {
+        KnownFruit known = kit.memory.fruit(id).orElse(null);
+        if (known == null) {
+            return null;
+        }
+        if (!kit.harvester.canReach(known)) {
+            return kit.speech.tooHigh(known.kind(), id, known.height(), kit.motor.body().gripper());
+        }
+        return kit.rule(known).map(rule -> kit.speech.wontPickUp(known.kind(), id, rule)).orElse(null);
     }
 
     /** The fruit to go for: one that fits the words now and that the gripper reaches. */

@@ -45,6 +45,12 @@ final class GoingTo implements Pursuit {
                 return status;
             }
             kit.navigator.reset();
+            kit.mention(target);
+            Optional<String> rule = target.kind() == Kind.AGENT ? Optional.empty() : kit.forbidden(target.where());
+            if (rule.isPresent()) {
+                outcome = kit.speech.wontGoTo(target, rule.get());
+                return Status.FAILED;
+            }
         }
         Point2 here = kit.here();
         Point2 where = whereNow();
@@ -73,7 +79,7 @@ final class GoingTo implements Pursuit {
             }
             Optional<Point2> spot = kit.besides(where, size);
             if (spot.isEmpty()) {
-                outcome = "I can't find a free spot by " + Restated.thing(target) + ".";
+                outcome = kit.speech.noFreeSpot(target);
                 return Status.FAILED;
             }
             status = kit.navigator.goTo(spot.get(), target.kind() == Kind.AGENT ? 1.5 : 0.8);
@@ -82,7 +88,7 @@ final class GoingTo implements Pursuit {
             return done();
         }
         if (status == Status.FAILED) {
-            outcome = "I can't find a way to " + Restated.thing(target) + ".";
+            outcome = kit.speech.noWayTo(target);
         }
         return status;
     }
@@ -94,7 +100,7 @@ final class GoingTo implements Pursuit {
 
     private Status done() {
         kit.standStill();
-        outcome = "I'm at " + Restated.thing(target) + ".";
+        outcome = kit.speech.imAt(target);
         return Status.DONE;
     }
 

@@ -38,7 +38,7 @@ final class GoingToPlace implements Pursuit {
         boolean there = inside.test(Known.standing(here));
         if (there) {
             kit.standStill();
-            outcome = "Done: I went " + where() + ".";
+            outcome = kit.speech.wentTo(area);
             return Status.DONE;
         }
         if (way == null) {
@@ -46,7 +46,7 @@ final class GoingToPlace implements Pursuit {
         }
         Status status = way.step();
         if (status != Status.RUNNING) {
-            outcome = status == Status.DONE ? "Done: I went " + where() + "." : way.outcome();
+            outcome = status == Status.DONE ? kit.speech.wentTo(area) : way.outcome();
         }
         return status;
     }
@@ -72,13 +72,6 @@ final class GoingToPlace implements Pursuit {
             return new Beside(anchor);
         }
         return new GoingTo(kit, anchor, null);
-    }
-
-    private String where() {
-        String restated = new GoTo(area).restatement();
-        // "Going near the castle." -> "near the castle"
-        String words = restated.startsWith("Going ") ? restated.substring("Going ".length()) : restated;
-        return words.endsWith(".") ? words.substring(0, words.length() - 1) : words;
     }
 
     /** Walks to a point on the named side of the anchor, once the anchor is known. */

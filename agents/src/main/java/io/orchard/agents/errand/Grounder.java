@@ -73,6 +73,9 @@ final class Grounder {
             return new Grounding.Unknown();
         }
         List<Known> chosen = select(reference, fits);
+        if (chosen.isEmpty()) {
+            return new Grounding.Unknown(); // "the fifth tree" when it knows of four
+        }
         if (chosen.size() > 1 && asksWhich(reference.kind())) {
             return new Grounding.Ambiguous(chosen);
         }
@@ -113,30 +116,18 @@ final class Grounder {
     }
 
     /**
-     * The objects of {@code fits} the reference's distance or superlative picks out (one), or all
-     * of them when it names neither; nearest first.
+     * The objects of {@code fits} the reference's distance or superlative picks out (one, or none
+     * when its ordinal counts past those that fit), or all of them when it names neither; nearest
+     * first.
      */
     List<Known> select(Reference reference, List<Known> fits) {
         if (fits.isEmpty()) {
             return fits;
         }
-        if (reference.distance() == Reference.Distance.FARTHEST) {
-            return List.of(fits.get(fits.size() - 1));
-        }
-        if (reference.distance() == Reference.Distance.NEAREST) {
-            return List.of(fits.get(0));
-        }
         if (reference.distance() != null) {
-            Comparator<Known> by = switch (reference.distance()) {
-                case HIGHEST, LOWEST -> Comparator.comparingDouble(k -> k.fruit() == null ? 0 : k.fruit().height());
-                case NORTHERNMOST, SOUTHERNMOST -> Comparator.comparingDouble(k -> k.where().z());
-                default -> Comparator.comparingDouble(k -> k.where().x());
-            };
-            boolean least = switch (reference.distance()) {
-                case LOWEST, NORTHERNMOST, WESTERNMOST -> true; // north is -z, west is -x
-                default -> false;
-            };
-            return List.of(least ? fits.stream().min(by).orElseThrow() : fits.stream().max(by).orElseThrow());
+            List<Known> ordered = ordered(reference.distance(), fits);
+            int index = reference.ordinal() == null ? 0 : reference.ordinal() - 1;
+            return index < ordered.size() ? List.of(ordered.get(index)) : List.of();
         }
         if (reference.size() == Reference.Size.LARGEST) {
             return List.of(fits.stream().max(Comparator.comparingDouble(Known::size)).orElseThrow());
@@ -145,6 +136,41 @@ final class Grounder {
             return List.of(fits.stream().min(Comparator.comparingDouble(Known::size)).orElseThrow());
         }
         return fits;
+    }
+
+    /**
+     * The objects that fit, in the order of a distance or superlative, the one it picks first: nearest
+     * first for "nearest", farthest first for "farthest", highest first for "highest", and so on. From
+     * the left and the right counts only what lies ahead of the agent, as it faced when told, when
+     * anything fitting lies there.
+     */
+    private List<Known> ordered(Reference.Distance distance, List<Known> fits) {
+        List<Known> ordered = new ArrayList<>(fits);
+        Comparator<Known> by = switch (distance) {
+            case NEAREST, FARTHEST -> Comparator.comparingDouble(k -> k.where().distance(memory.position()));
+            case HIGHEST, LOWEST -> Comparator.comparingDouble(k -> k.fruit() == null ? 0 : k.fruit().height());
+            case NORTHERNMOST, SOUTHERNMOST -> Comparator.comparingDouble(k -> k.where().z());
+            case EASTERNMOST, WESTERNMOST -> Comparator.comparingDouble(k -> k.where().x());
+            case LEFTMOST, RIGHTMOST -> Comparator.comparingDouble(this::bearingFromTold);
+        };
+        if (distance == Reference.Distance.LEFTMOST || distance == Reference.Distance.RIGHTMOST) {
+            List<Known> ahead = ordered.stream().filter(k -> Math.abs(bearingFromTold(k)) <= Math.PI / 2).toList();
+            if (!ahead.isEmpty()) {
+                ordered = new ArrayList<>(ahead);
+            }
+        }
+        boolean greatestFirst = switch (distance) {
+            case FARTHEST, HIGHEST, SOUTHERNMOST, EASTERNMOST, LEFTMOST -> true; // north is -z, west is -x, left +
+            default -> false;
+        };
+        ordered.sort(greatestFirst ? by.reversed() : by);
+        return ordered;
+    }
+
+    /** The bearing of a thing from where the agent stood, as it faced, when told: positive to its left. */
+    private double bearingFromTold(Known k) {
+        double facing = toldAt == null ? memory.heading() : toldHeading;
+        return Bearings.bearing(toldAt(), facing, k.where());
     }
 
     /**
@@ -260,6 +286,9 @@ final class Grounder {
                     found.add(Known.of(kind, agent.name(), agent.position(), agent.radius()));
                 }
             }
+        }
+        if (reference.id() != null) {
+            found.removeIf(k -> !k.id().equals(reference.id())); // "that table": the one spoken of
         }
         return found;
     }

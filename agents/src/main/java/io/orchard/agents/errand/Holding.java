@@ -28,6 +28,6 @@ final class Holding implements Pursuit {
 
     @Override
     public String outcome() {
-        return "Done waiting.";
+        return kit.speech.doneWaiting();
     }
 }

@@ -26,6 +26,12 @@ record Known(Reference.Kind kind, String id, Point2 where, double size, @Nullabl
         return new Known(kind, id, where, size, null, null);
     }
 
+    /** A fruit the agent knows of. */
+    static Known fruit(KnownFruit fruit) {
+        return new Known(Reference.Kind.valueOf(fruit.kind().name()), fruit.id(), fruit.ground(), fruit.radius(), fruit,
+                null);
+    }
+
     /** The agent itself, standing at a point: for asking whether it has reached a place. */
     static Known standing(Point2 where) {
         return of(Reference.Kind.AGENT, "me", where, 0);

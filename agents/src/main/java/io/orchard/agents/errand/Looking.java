@@ -34,20 +34,16 @@ final class Looking {
     String announcement() {
         Reference.Kind kind = wanted.kind();
         if (kind == Reference.Kind.AGENT && wanted.name() != null) {
-            return "I can't see " + wanted.name() + "; I'll look around for it.";
+            return kit.speech.cantSee(wanted.name());
         }
         if (kind == Reference.Kind.CASTLE || kind == Reference.Kind.RIVER || kind == Reference.Kind.FOREST) {
-            return "I don't know where " + wanted.words() + " is yet; I'll look for it.";
+            return kit.speech.dontKnowWhere(wanted);
         }
-        String words = wanted.words();
-        if (wanted.kind() == Reference.Kind.FRUIT && words.startsWith("a fruit")) {
-            words = "any fruit" + words.substring("a fruit".length()); // not "a fruit": fruit is a mass noun
-        }
-        return "I don't know of " + words + " yet; I'll look for one.";
+        return kit.speech.dontKnowOf(wanted);
     }
 
     /** What to say when the search found nothing. */
     String failure() {
-        return "I have looked everywhere I can reach and found no " + Restated.bare(wanted) + ".";
+        return kit.speech.lookedEverywhere(wanted);
     }
 }

@@ -1,6 +1,8 @@
 package io.orchard.agents.errand;
 
 import io.orchard.agents.language.Goal;
+import io.orchard.agents.language.Language;
+import io.orchard.agents.language.Phrasing;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.map.Bearings;
 import io.orchard.agents.map.RiverMap;
@@ -25,6 +27,7 @@ final class Question {
     static final int MAX_CHOICES = 4;
 
     private static final String[] ORDINALS = {"first", "second", "third", "fourth"};
+    private static final String[] GERMAN_ORDINALS = {"erst", "zweit", "dritt", "viert"};
 
     private final Goal goal;
     private final Reference.Kind kind;
@@ -38,12 +41,16 @@ final class Question {
      * @param goal    the goal to pursue once the person has chosen
      * @param choices the things that fit, nearest first
      */
-    Question(Goal goal, Reference.Kind kind, List<Known> choices, WorldMemory memory, Grounder grounder) {
+    Question(Goal goal, Reference.Kind kind, List<Known> choices, WorldMemory memory, Grounder grounder, Speech speech) {
         this.goal = goal;
         this.kind = kind;
         this.choices = List.copyOf(choices.subList(0, Math.min(MAX_CHOICES, choices.size())));
+        boolean de = speech.language() == Language.GERMAN;
+        boolean feminine = kind == Reference.Kind.BRIDGE;
         Point2 here = memory.position();
-        StringBuilder asked = new StringBuilder("Which ").append(kind.wireName()).append(" do you mean? ");
+        StringBuilder asked = new StringBuilder(de ? (feminine ? "Welche " : "Welchen ")
+                + Phrasing.noun(Reference.to(kind), Language.GERMAN, Phrasing.Case.ACCUSATIVE).replaceFirst("^\\S+ ", "")
+                + " meinst du? " : "Which " + kind.wireName() + " do you mean? ");
         for (int i = 0; i < this.choices.size(); i++) {
             Known choice = this.choices.get(i);
             bearings.add(Bearings.bearing(here, memory.heading(), choice.where()));
@@ -52,18 +59,21 @@ final class Question {
         }
         for (int i = 0; i < this.choices.size(); i++) {
             Known choice = this.choices.get(i);
-            asked.append(i + 1).append(": ").append(ordinal(i)).append(", ")
-                    .append(Grounder.bearingWords(here, choice.where()));
+            asked.append(i + 1).append(": ").append(de ? germanOrdinal(i, feminine) : ordinal(i)).append(", ")
+                    .append(speech.bearing(here, choice.where()));
             if (this.choices.size() == 2 && Math.abs(bearings.get(0) - bearings.get(1)) > 0.2) {
-                asked.append(", the ").append(bearings.get(i).equals(Math.max(bearings.get(0), bearings.get(1)))
-                        ? "left" : "right").append(" one");
+                boolean left = bearings.get(i).equals(Math.max(bearings.get(0), bearings.get(1)));
+                asked.append(de ? (feminine ? ", die " : ", den ") + (left ? "linke" : "rechte") + (feminine ? "" : "n")
+                        : ", the " + (left ? "left" : "right") + " one");
             }
             if (!cues.get(i).isEmpty()) {
-                asked.append(", by the ").append(cues.get(i));
+                asked.append(de ? (cues.get(i).equals("castle") ? ", beim Schloss" : ", beim Fluss")
+                        : ", by the " + cues.get(i));
             }
             asked.append(" (").append(choice.id()).append(")").append(i + 1 < this.choices.size() ? "; " : ". ");
         }
-        asked.append("Say 'the nearer one', a direction or a number.");
+        asked.append(de ? "Sag '" + (feminine ? "die nähere" : "den näheren") + "', eine Richtung oder eine Zahl."
+                : "Say 'the nearer one', a direction or a number.");
         this.text = asked.toString();
     }
 
@@ -84,7 +94,9 @@ final class Question {
 
     /** The thing an answer picks out; empty when it does not pick out exactly one. */
     Optional<Known> read(String answer) {
-        String said = " " + answer.toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9 ]", " ").replaceAll("\\s+", " ") + " ";
+        String said = " " + java.text.Normalizer.normalize(answer.toLowerCase(Locale.ROOT), java.text.Normalizer.Form.NFD)
+                .replaceAll("\\p{M}", "").replace("ß", "ss").replaceAll("[^a-z0-9 ]", " ").replaceAll("\\s+", " ") + " ";
+        said = german(said);
         List<Predicate<Integer>> exact = new ArrayList<>();
         for (int i = 0; i < choices.size(); i++) {
             String id = " " + choices.get(i).id().toLowerCase(Locale.ROOT) + " ";
@@ -153,6 +165,34 @@ final class Question {
             }
         }
         return best;
+    }
+
+    /** A German answer in the words the English one would use: "den näheren" is "the nearer", "links" "left". */
+    private static String german(String said) {
+        String english = said;
+        String[][] words = {{"naher(e|en|er|es)?", "nearer"}, {"nachst(e|en|er|es)?", "nearest"},
+            {"weiter(e|en|er|es)?", "farther"}, {"entfernter(e|en|er|es)?", "farther"}, {"ander(e|en|er|es)", "other"},
+            {"link(e|en|er|es|s)", "left"}, {"recht(e|en|er|es|s)", "right"}, {"erst(e|en|er|es)", "first"},
+            {"zweit(e|en|er|es)", "second"}, {"dritt(e|en|er|es)", "third"}, {"viert(e|en|er|es)", "fourth"},
+            {"(norden|nord|nordlich(e|en)?)", "north"}, {"(suden|sud|sudlich(e|en)?)", "south"},
+            {"(osten|ost|ostlich(e|en)?)", "east"}, {"(westen|west|westlich(e|en)?)", "west"},
+            {"(nordosten|nordost|nordostlich(e|en)?)", "north-east"}, {"(nordwesten|nordwest|nordwestlich(e|en)?)",
+                "north-west"}, {"(sudosten|sudost|sudostlich(e|en)?)", "south-east"},
+            {"(sudwesten|sudwest|sudwestlich(e|en)?)", "south-west"}, {"schloss", "castle"}, {"fluss", "river"},
+            {"brucke", "bridge"}, {"tisch", "table"}, {"baum", "tree"}};
+        for (String[] word : words) {
+            english = english.replaceAll(" " + word[0] + "(?= )", " " + word[1]);
+        }
+        return english;
+    }
+
+    private String germanOrdinal(int i, boolean feminine) {
+        String article = feminine ? "die " : "den ";
+        String ending = feminine ? "e" : "en";
+        if (choices.size() == 2) {
+            return article + (i == 0 ? "nähere" : "weitere") + (feminine ? "" : "n");
+        }
+        return article + (i == 0 ? "nächst" + ending : GERMAN_ORDINALS[i] + "nächst" + ending);
     }
 
     private String ordinal(int i) {

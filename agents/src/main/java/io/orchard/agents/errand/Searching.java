@@ -25,13 +25,13 @@ final class Searching implements Pursuit {
         for (Known known : fits) {
             if (known.fruit() == null || known.fruit().seenTick() >= kit.memory.tick()) {
                 kit.standStill();
-                outcome = "I see " + Restated.thing(known) + ", "
-                        + Grounder.bearingWords(kit.here(), known.where()) + ".";
+                kit.mention(known);
+                outcome = kit.speech.iSee(known, kit.here());
                 return Status.DONE;
             }
         }
         if (kit.explorer.step(kit.navigator) == Status.DONE) {
-            outcome = "I have looked everywhere I can reach and found no " + Restated.bare(what) + ".";
+            outcome = kit.speech.lookedEverywhere(what);
             return Status.FAILED;
         }
         return Status.RUNNING;

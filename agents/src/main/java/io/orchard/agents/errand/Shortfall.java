@@ -27,7 +27,8 @@ final class Shortfall {
         Point2 target = Bearings.ahead(here, heading, distance);
         String problem = problem(kit, target);
         if (problem == null) {
-            return WalkPursuit.to(kit, target, "Done: I went " + RelativeMove.metres(distance) + " " + direction + ".");
+            return WalkPursuit.to(kit, target, kit.speech.went(kit.speech.metres(RelativeMove.metres(distance),
+                    direction)));
         }
         double reach = distance;
         while (reach > 0 && problem(kit, Bearings.ahead(here, heading, reach)) != null) {
@@ -35,25 +36,23 @@ final class Shortfall {
         }
         reach -= CLEARANCE;
         if (reach < CLEARANCE) {
-            return failed("That point is " + problem + ", and I can't go any way " + direction + " from here; I stayed "
-                    + "where I am.");
+            return failed(kit.speech.pointNowhere(problem, direction));
         }
-        String dry = RelativeMove.metres(Math.floor(reach)) + " " + direction;
-        kit.motor.say("That point is " + problem + "; the nearest place I can stand that way is " + dry
-                + ", and I'll go there.");
-        return WalkPursuit.to(kit, Bearings.ahead(here, heading, reach), "Done: I went " + dry + ", not the "
-                + RelativeMove.metres(distance) + " you asked: further is " + problem + ".");
+        String dry = kit.speech.metres(RelativeMove.metres(Math.floor(reach)), direction);
+        kit.motor.say(kit.speech.pointNearest(problem, dry));
+        return WalkPursuit.to(kit, Bearings.ahead(here, heading, reach), kit.speech.wentShort(dry,
+                kit.speech.metres(RelativeMove.metres(distance)), problem));
     }
 
     /** Why the agent cannot stand at this point, in the world's words; null when it can, as far as it knows. */
     static String problem(Kit kit, Point2 p) {
         if (!kit.memory.bounds().contains(p.x(), p.z())) {
-            return "beyond the edge of the world";
+            return kit.speech.beyondTheEdge();
         }
         if (kit.memory.river().water(p.x(), p.z(), kit.memory.radius())) {
-            return "in the river";
+            return kit.speech.inTheRiver();
         }
-        return null;
+        return kit.forbidden(p).map(kit.speech::against).orElse(null);
     }
 
     private static Pursuit failed(String why) {

@@ -33,7 +33,7 @@ final class Surveying implements Pursuit {
     public Status step() {
         if (area == null) {
             if (kit.explorer.step(kit.navigator) == Status.DONE) {
-                outcome = "I have seen everything I can reach.";
+                outcome = kit.speech.seenEverything();
                 return Status.DONE;
             }
             return Status.RUNNING;
@@ -50,7 +50,7 @@ final class Surveying implements Pursuit {
             if (cell == null || kit.memory.coverage().seen(cell)) {
                 Optional<Point2> next = next(inside);
                 if (next.isEmpty()) {
-                    outcome = "I have looked over " + area.words() + ".";
+                    outcome = kit.speech.lookedOver(area);
                     return Status.DONE;
                 }
                 cell = next.get();

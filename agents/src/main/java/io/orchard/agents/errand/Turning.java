@@ -65,6 +65,7 @@ final class Turning implements Pursuit {
             Grounding grounding = kit.grounder.ground(target);
             Point2 here = kit.here();
             if (grounding instanceof Grounding.Found found) {
+                kit.mention(found.chosen());
                 heading = Bearings.headingTowards(here, found.chosen().where());
             } else if (grounding instanceof Grounding.Ambiguous ambiguous) {
                 heading = Bearings.headingTowards(here, ambiguous.choices().get(0).where());
@@ -72,12 +73,12 @@ final class Turning implements Pursuit {
                 kit.motor.turnTo(Bearings.normalise(kit.motor.heading() + LOOK_STEP));
                 return Status.RUNNING;
             } else {
-                outcome = "I looked all around and know of no " + Restated.bare(target) + ".";
+                outcome = kit.speech.lookedAllAround(target);
                 return Status.FAILED;
             }
         }
         kit.motor.turnTo(heading);
-        outcome = "Done: I'm facing " + compass(heading) + ".";
+        outcome = kit.speech.facing(compass(heading));
         return Status.DONE;
     }
 

@@ -4,6 +4,7 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.map.Bearings;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.Point2;
+import java.util.Optional;
 
 /**
  * Walking to a point fixed when the pursuit starts: a few steps forward, back or aside, back to
@@ -42,12 +43,12 @@ final class WalkPursuit implements Pursuit {
     /** Walks {@code distance} in the direction of {@code heading}; backwards keeps facing the way it faces. */
     static WalkPursuit steps(Kit kit, double heading, boolean backwards, double distance) {
         Point2 end = Bearings.ahead(kit.here(), heading, distance);
-        return new WalkPursuit(kit, end, Double.NaN, backwards, "Done: I moved.");
+        return new WalkPursuit(kit, end, Double.NaN, backwards, kit.speech.moved());
     }
 
     /** Walks on in the direction of {@code heading} as far as it can. */
     static WalkPursuit on(Kit kit, double heading, String direction) {
-        return new WalkPursuit(kit, null, heading, false, "I've gone as far " + direction + " as I can.");
+        return new WalkPursuit(kit, null, heading, false, kit.speech.asFarAsICan(direction));
     }
 
     @Override
@@ -62,6 +63,15 @@ final class WalkPursuit implements Pursuit {
             return kit.motor.walking() ? Status.RUNNING : finish(Status.DONE);
         }
         if (point != null) {
+            if (goal == null) {
+                goal = point;
+                Optional<String> rule = kit.forbidden(point);
+                if (rule.isPresent() && !kit.forbidden(here).isPresent()) {
+                    kit.standStill();
+                    outcome = kit.speech.wontGoThere(rule.get());
+                    return Status.FAILED;
+                }
+            }
             Status status = kit.navigator.goTo(point, 0.8);
             return status == Status.RUNNING ? status : finish(status);
         }
@@ -86,7 +96,7 @@ final class WalkPursuit implements Pursuit {
 
     private Status finish(Status status) {
         kit.standStill();
-        outcome = status == Status.DONE ? arrived : "I can't find a way there.";
+        outcome = status == Status.DONE ? arrived : kit.speech.noWayThere();
         return status;
     }
 

@@ -46,7 +46,9 @@ public record Ask(Topic topic, @Nullable Reference about) implements Goal {
         /** What the agent can be asked to do: "what can you do?". */
         CAN,
         /** Which way the agent faces: "which way are you facing?". */
-        HEADING;
+        HEADING,
+        /** The {@link Rule rules} in force: "what are your rules?". */
+        RULES;
 
         /** The name of this topic in JSON and in the notation: {@code see}, {@code where-is}, ... */
         public String wireName() {

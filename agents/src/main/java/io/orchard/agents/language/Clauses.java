@@ -1,5 +1,6 @@
 package io.orchard.agents.language;
 
+import static io.orchard.agents.language.Lexeme.Cat.COND;
 import static io.orchard.agents.language.Lexeme.Cat.CONN;
 import static io.orchard.agents.language.Lexeme.Cat.ME;
 import static io.orchard.agents.language.Lexeme.Cat.PREP;
@@ -10,8 +11,8 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The structure of a sentence: its clauses, split at punctuation and connectives ("and", "then",
- * "after that"), put in the order meant ("X after Y-ing" is Y, then X; "before Y-ing, X" is X,
+ * The structure of a sentence: its clauses, split at punctuation, connectives ("and", "then",
+ * "after that") and conditions ("when you see"), put in the order meant ("X after Y-ing" is Y, then X; "before Y-ing, X" is X,
  * then Y), without a bare "go" before another verb ("go and get the banana"), and the verb a
  * clause without one borrows from the clause before ("pick up the banana and the coconut").
  */
@@ -44,6 +45,14 @@ final class Clauses {
             Lexeme t = lexemes.get(i);
             boolean subordinate = t.isAny(PREP, "after", "before") && i + 1 < lexemes.size()
                     && lexemes.get(i + 1).is(VERB);
+            if (t.is(COND) && !current.isEmpty()) {
+                // "take the bananas when you see them": the condition is a clause of its own
+                segments.add(new Segment(List.copyOf(current), sawConnective && onlyAnd && !segments.isEmpty(), marker));
+                current.clear();
+                sawConnective = false;
+                onlyAnd = true;
+                marker = Marker.NONE;
+            }
             if (t.is(PUNCT) || t.is(CONN) || subordinate) {
                 if (!current.isEmpty()) {
                     segments.add(new Segment(List.copyOf(current), sawConnective && onlyAnd && !segments.isEmpty(),

@@ -19,7 +19,9 @@ package io.orchard.agents.language;
  *   <li>other agents: {@link Follow};</li>
  *   <li>autonomy: {@link Stop}, {@link Wait}, {@link CarryOn};</li>
  *   <li>several goals one after the other: {@link Sequence};</li>
- *   <li>a question to answer at once, without dropping what the agent does: {@link Ask}.</li>
+ *   <li>a question to answer at once, without dropping what the agent does: {@link Ask};</li>
+ *   <li>standing {@link Rule rules} that hold until {@link Lift lifted}: places to {@link Avoid}, fruit
+ *       to {@link Leave} or to take {@link Only}, and conditions to act on ({@link WhenSee}).</li>
  * </ul>
  *
  * <p>Every goal is an immutable record whose constructor validates it; goals compare by value.
@@ -34,7 +36,7 @@ package io.orchard.agents.language;
  */
 public sealed interface Goal
         permits GoTo, Cross, Head, RelativeMove, ComeBack, Collect, Turn, Face, LookAt, LookFor, Explore, Follow,
-        Stop, Wait, CarryOn, Sequence, Ask {
+        Stop, Wait, CarryOn, Sequence, Ask, Rule, Lift {
 
     /**
      * The agent's one-line English restatement of this goal, for it to say back to the person, e.g.
@@ -43,6 +45,14 @@ public sealed interface Goal
      */
     default String restatement() {
         return Restatement.of(this);
+    }
+
+    /**
+     * The agent's restatement of this goal in a language it speaks: in German "Ich hebe die nächste
+     * Banane auf, die auf einem Tisch liegt."
+     */
+    default String restatement(Language language) {
+        return language == Language.GERMAN ? GermanRestatement.of(this) : Restatement.of(this);
     }
 
     /**

@@ -115,6 +115,24 @@ public final class GoalJson {
             if (ask.about() != null) {
                 node.set("about", tree(ask.about()));
             }
+        } else if (goal instanceof Avoid avoid) {
+            node.put("goal", "avoid");
+            node.set("area", tree(avoid.area()));
+        } else if (goal instanceof Leave leave) {
+            node.put("goal", "leave");
+            node.set("what", tree(leave.what()));
+        } else if (goal instanceof Only only) {
+            node.put("goal", "only");
+            node.set("what", tree(only.what()));
+        } else if (goal instanceof Lift lift) {
+            node.put("goal", "lift");
+            if (lift.what() != null) {
+                node.set("what", tree(lift.what()));
+            }
+        } else if (goal instanceof WhenSee when) {
+            node.put("goal", "when-see");
+            node.set("what", tree(when.what()));
+            node.set("then", tree(when.then()));
         }
         return node;
     }
@@ -130,6 +148,12 @@ public final class GoalJson {
         }
         if (reference.distance() != null) {
             node.put("distance", reference.distance().wireName());
+        }
+        if (reference.ordinal() != null) {
+            node.put("ordinal", reference.ordinal());
+        }
+        if (reference.id() != null) {
+            node.put("id", reference.id());
         }
         if (reference.place() != null) {
             ObjectNode place = node.putObject("place");

@@ -69,9 +69,15 @@ final class GoalReader {
             case "carry-on" -> new CarryOn();
             case "ask" -> new Ask(topic(text(node, "topic", where), where + ".topic"),
                     node.has("about") ? reference(node.get("about"), where + ".about") : null);
+            case "avoid" -> new Avoid(reference(node.get("area"), where + ".area"));
+            case "leave" -> new Leave(reference(node.get("what"), where + ".what"));
+            case "only" -> new Only(reference(node.get("what"), where + ".what"));
+            case "lift" -> new Lift(node.has("what") ? reference(node.get("what"), where + ".what") : null);
+            case "when-see" -> new WhenSee(reference(node.get("what"), where + ".what"),
+                    goal(node.get("then"), where + ".then"));
             default -> throw new IllegalArgumentException(where + ".goal must be one of sequence, go-to, cross, head, "
                     + "move, come-back, collect, turn, face, look-at, look-for, explore, follow, stop, wait, carry-on, "
-                    + "ask; was '" + goal + "'");
+                    + "ask, avoid, leave, only, lift, when-see; was '" + goal + "'");
         };
     }
 
@@ -101,7 +107,16 @@ final class GoalReader {
             Place.Relation relation = named(Place.Relation.values(), text(p, "relation", at), at + ".relation");
             place = new Place(relation, p.has("anchor") ? reference(p.get("anchor"), at + ".anchor") : null);
         }
-        return new Reference(kind, name, size, distance, place);
+        Integer ordinal = null;
+        if (node.has("ordinal")) {
+            JsonNode value = node.get("ordinal");
+            if (!value.isIntegralNumber()) {
+                throw new IllegalArgumentException(where + ".ordinal must be a whole number, was " + value);
+            }
+            ordinal = value.asInt();
+        }
+        String id = node.has("id") ? text(node, "id", where) : null;
+        return new Reference(kind, name, size, distance, place, ordinal, id);
     }
 
     private static int count(JsonNode node, String where) {

@@ -36,15 +36,21 @@ public final class GoalSchema {
                 + "(docs/instructions.md).");
         schema.put("$ref", "#/$defs/goal");
         ObjectNode defs = schema.putObject("$defs");
-        defs.set("goal", goal(true));
-        defs.set("step", goal(false));
+        defs.set("goal", goal(true, true));
+        defs.set("step", goal(false, true));
+        defs.set("action", goal(true, false));
+        defs.set("actionStep", goal(false, false));
         defs.set("reference", reference(Stream.of(Reference.Kind.values())));
         defs.set("fruitReference", reference(Stream.of(Reference.Kind.values()).filter(Reference.Kind::isFruit)));
         return schema;
     }
 
-    /** One of the goals; a sequence only when {@code withSequence}, since a step is never one. */
-    private static ObjectNode goal(boolean withSequence) {
+    /**
+     * One of the goals; a sequence only when {@code withSequence}, since a step is never one; the rules,
+     * lifting them, questions and carrying on only when {@code withRules}, since what a condition does is
+     * an action.
+     */
+    private static ObjectNode goal(boolean withSequence, boolean withRules) {
         ObjectNode goal = MAPPER.createObjectNode();
         ArrayNode oneOf = goal.putArray("oneOf");
         if (withSequence) {
@@ -52,9 +58,39 @@ public final class GoalSchema {
             ObjectNode steps = property(sequence, "steps", true);
             steps.put("type", "array");
             steps.put("minItems", 2);
-            steps.putObject("items").put("$ref", "#/$defs/step");
+            steps.putObject("items").put("$ref", withRules ? "#/$defs/step" : "#/$defs/actionStep");
             oneOf.add(sequence);
         }
+        actions(oneOf);
+        if (withRules) {
+            oneOf.add(kind("carry-on", "Go back to what it was doing by itself."));
+            ObjectNode ask = kind("ask", "A question, answered from what the agent knows.");
+            names(property(ask, "topic", true), Ask.Topic.values(), Ask.Topic::wireName);
+            property(ask, "about", false).put("$ref", "#/$defs/reference");
+            oneOf.add(ask);
+            ObjectNode avoid = kind("avoid", "A rule until lifted: never go into an area.");
+            property(avoid, "area", true).put("$ref", "#/$defs/reference");
+            oneOf.add(avoid);
+            ObjectNode leave = kind("leave", "A rule until lifted: take no fruit that fits.");
+            property(leave, "what", true).put("$ref", "#/$defs/fruitReference");
+            oneOf.add(leave);
+            ObjectNode only = kind("only", "A rule until lifted: take only fruit that fits.");
+            property(only, "what", true).put("$ref", "#/$defs/fruitReference");
+            oneOf.add(only);
+            ObjectNode lift = kind("lift", "Lift the rules about an area or fruit, or every rule without one.");
+            property(lift, "what", false).put("$ref", "#/$defs/reference");
+            oneOf.add(lift);
+            ObjectNode when = kind("when-see", "A condition until lifted: each time something that fits is seen, "
+                    + "do the action for it.");
+            property(when, "what", true).put("$ref", "#/$defs/reference");
+            property(when, "then", true).put("$ref", "#/$defs/action");
+            oneOf.add(when);
+        }
+        return goal;
+    }
+
+    /** The goals that act: every one but the rules, lifting, questions, carrying on and sequences. */
+    private static void actions(ArrayNode oneOf) {
         ObjectNode goTo = kind("go-to", "Walk to a place or an object.");
         property(goTo, "destination", true).put("$ref", "#/$defs/reference");
         oneOf.add(goTo);
@@ -99,12 +135,6 @@ public final class GoalSchema {
         ObjectNode wait = kind("wait", "Stay where it is, for some seconds or until told otherwise.");
         property(wait, "seconds", false).put("type", "number").put("minimum", 0);
         oneOf.add(wait);
-        oneOf.add(kind("carry-on", "Go back to what it was doing by itself."));
-        ObjectNode ask = kind("ask", "A question, answered from what the agent knows.");
-        names(property(ask, "topic", true), Ask.Topic.values(), Ask.Topic::wireName);
-        property(ask, "about", false).put("$ref", "#/$defs/reference");
-        oneOf.add(ask);
-        return goal;
     }
 
     /** A goal's object: its {@code "goal"} discriminator and no fields but those it declares. */
@@ -139,6 +169,8 @@ public final class GoalSchema {
         properties.putObject("name").put("type", "string").put("minLength", 1);
         names(properties.putObject("size"), Reference.Size.values(), Reference.Size::wireName);
         names(properties.putObject("distance"), Reference.Distance.values(), Reference.Distance::wireName);
+        properties.putObject("ordinal").put("type", "integer").put("minimum", 1).put("maximum", Reference.MAX_ORDINAL);
+        properties.putObject("id").put("type", "string").put("minLength", 1);
         ObjectNode place = properties.putObject("place");
         place.put("type", "object");
         ObjectNode placeProperties = place.putObject("properties");
@@ -147,6 +179,7 @@ public final class GoalSchema {
         place.putArray("required").add("relation");
         place.put("additionalProperties", false);
         reference.putArray("required").add("kind");
+        reference.putObject("dependentRequired").putArray("ordinal").add("distance");
         reference.put("additionalProperties", false);
         return reference;
     }

@@ -29,6 +29,9 @@ public sealed interface Interpretation {
     /** The agent the sentence was addressed to, as the person wrote its name; empty when it named none. */
     Optional<String> addressee();
 
+    /** The language the sentence was read in, and its answer is in. */
+    Language language();
+
     /**
      * Whether an agent with this name should act on the sentence: when it named no one, or named
      * this agent (ignoring case).
@@ -44,14 +47,22 @@ public sealed interface Interpretation {
      * @param goal        what the person wants done
      * @param restatement the agent's one-line English restatement of the goal, to say back
      * @param addressee   the agent the sentence was addressed to, if it named one
+     * @param language    the language the sentence was read in, and the restatement is in
      */
-    record Understood(Goal goal, String restatement, Optional<String> addressee) implements Interpretation {
+    record Understood(Goal goal, String restatement, Optional<String> addressee, Language language)
+            implements Interpretation {
 
         /** Checks the components; a bad value is refused with an exception that names it. */
         public Understood {
             Objects.requireNonNull(goal, "goal");
             Objects.requireNonNull(restatement, "restatement");
             Objects.requireNonNull(addressee, "addressee");
+            Objects.requireNonNull(language, "language");
+        }
+
+        /** A sentence understood in English. */
+        public Understood(Goal goal, String restatement, Optional<String> addressee) {
+            this(goal, restatement, addressee, Language.ENGLISH);
         }
     }
 
@@ -64,8 +75,9 @@ public sealed interface Interpretation {
      * @param unknownWords the words of the sentence the agent does not know, as written, in order;
      *                     empty when every word was known
      * @param addressee    the agent the sentence was addressed to, if it named one
+     * @param language     the language the sentence was read in, and the answer is in
      */
-    record NotUnderstood(String answer, List<String> unknownWords, Optional<String> addressee)
+    record NotUnderstood(String answer, List<String> unknownWords, Optional<String> addressee, Language language)
             implements Interpretation {
 
         /**
@@ -76,6 +88,12 @@ public sealed interface Interpretation {
             Objects.requireNonNull(answer, "answer");
             unknownWords = List.copyOf(unknownWords);
             Objects.requireNonNull(addressee, "addressee");
+            Objects.requireNonNull(language, "language");
+        }
+
+        /** A sentence not understood, answered in English. */
+        public NotUnderstood(String answer, List<String> unknownWords, Optional<String> addressee) {
+            this(answer, unknownWords, addressee, Language.ENGLISH);
         }
     }
 }

@@ -27,4 +27,16 @@ public interface Interpreter {
      * @param sentence what the person typed; may be null, empty or anything else
      */
     Interpretation interpret(String sentence);
+
+    /**
+     * What this sentence asks for, said to an agent that spoke of or looked at these things last, so
+     * that "that table" or "it" can mean one of them. The default ignores them and reads the sentence
+     * alone; {@link InstructionInterpreter} uses them.
+     *
+     * @param sentence  what the person typed; may be null, empty or anything else
+     * @param discourse what the agent spoke about last, most recent first
+     */
+    default Interpretation interpret(String sentence, Discourse discourse) {
+        return interpret(sentence);
+    }
 }

@@ -60,9 +60,20 @@ public final class LanguageModelInterpreter implements Interpreter {
         this.instructions = instructions();
     }
 
+    /** The interpreter it asks first, whose answers it keeps when they understand. */
+    public Interpreter grammar() {
+        return grammar;
+    }
+
     @Override
     public Interpretation interpret(String sentence) {
-        Interpretation heard = grammar.interpret(sentence);
+        return interpret(sentence, Discourse.NONE);
+    }
+
+    /** As {@link #interpret(String)}, the grammar reading the sentence in what the agent spoke of last. */
+    @Override
+    public Interpretation interpret(String sentence, Discourse discourse) {
+        Interpretation heard = grammar.interpret(sentence, discourse);
         if (!(heard instanceof Interpretation.NotUnderstood notUnderstood) || sentence == null
                 || sentence.isBlank()) {
             return heard;

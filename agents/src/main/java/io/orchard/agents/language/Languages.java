@@ -23,10 +23,10 @@ final class Languages {
             "French", Set.of("prends", "prend", "prenez", "la", "le", "les", "va", "vas", "allez", "au", "aux", "des",
                     "une", "et", "est", "banane", "noix", "chateau", "riviere", "pont", "arbre", "ramasse", "mange",
                     "cherche", "suis", "moi", "tu", "vous", "plait", "tourne", "gauche", "droite", "ou", "es"),
-            "Spanish", Set.of("ve", "al", "el", "los", "las", "coge", "toma", "recoge", "castillo", "rio", "puente",
+            "Spanish", Set.of("ve", "al", "el", "la", "los", "las", "coge", "toma", "recoge", "castillo", "rio", "puente",
                     "arbol", "platano", "por", "favor", "donde", "estas", "una", "y", "gira", "izquierda",
                     "derecha", "busca", "sigue"),
-            "Italian", Set.of("raccogli", "prendi", "vai", "il", "lo", "gli", "della", "castello", "fiume", "ponte",
+            "Italian", Set.of("raccogli", "prendi", "vai", "il", "lo", "la", "gli", "della", "castello", "fiume", "ponte",
                     "albero", "tavolo", "per", "favore", "dove", "sei", "gira", "sinistra", "destra", "cerca", "segui"),
             "Dutch", Set.of("pak", "de", "het", "een", "ga", "naar", "kasteel", "rivier", "brug", "boom", "tafel",
                     "banaan", "kokosnoot", "alsjeblieft", "waar", "ben", "je", "pluk", "volg", "zoek", "links",
@@ -41,11 +41,19 @@ final class Languages {
      * "another language" when two languages fit as well.
      */
     static String other(List<Tokenizer.Token> tokens) {
+        return other(tokens, List.of(Language.ENGLISH));
+    }
+
+    /** As {@link #other(List)}, for an interpreter that understands these languages: never one of them. */
+    static String other(List<Tokenizer.Token> tokens, List<Language> understood) {
         List<String> words = tokens.stream().filter(Tokenizer.Token::isWord).map(Tokenizer.Token::text).toList();
         String best = null;
         int most = 0;
         boolean tie = false;
         for (Map.Entry<String, Set<String>> language : MARKERS.entrySet()) {
+            if (understood.stream().anyMatch(known -> known.englishName().equals(language.getKey()))) {
+                continue;
+            }
             int count = (int) words.stream().filter(language.getValue()::contains).count();
             if (count > most) {
                 best = language.getKey();

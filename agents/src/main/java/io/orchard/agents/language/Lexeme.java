@@ -21,7 +21,21 @@ record Lexeme(Cat cat, String lemma, boolean plural, double number, String raw, 
     /** The categories of the grammar. */
     enum Cat {
         VERB, NOUN, NAME, SIZE, DIST, NUMBER, QUANT, DET, PREP, DIR, SIDE, UNIT, HERE, PRON, ME, CONN, NEG,
-        FILLER, PUNCT, UNKNOWN
+        FILLER, PUNCT, UNKNOWN,
+        /** A condition: {@code when-see} ("when you see", "if you find"), or a bare "when", "if". */
+        COND,
+        /** "only", "nothing but": the only fruit to take. */
+        ONLY,
+        /** "from now on", "for the rest of the game": a rule that lasts. */
+        LASTING,
+        /** "again": with {@link #PERMIT}, a rule lifted. */
+        AGAIN,
+        /** "you can", "you may", "feel free to": with {@link #AGAIN}, a rule lifted. */
+        PERMIT,
+        /** "rule", "rules", "restrictions". */
+        RULE,
+        /** An ordinal: "second", "third", "4th"; its value is the number. */
+        ORD
     }
 
     boolean is(Cat cat) {

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -39,8 +40,18 @@ final class Lexicon {
             "mind", "sure", "okay", "hello", "thanks", "cheers", "good", "nice", "fine", "hold", "hang",
             "able", "same", "whole", "single", "only", "exactly", "really", "still", "away", "about", "ones");
 
-    private static final Lexicon BASE = new Builder().build();
+    private static final Builder ENGLISH_WORDS = new Builder().build();
+    private static final GermanWords GERMAN_WORDS = new GermanWords().build();
 
+    private static final Lexicon BASE = new Lexicon(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases, PAPER_AGENTS,
+            Language.ENGLISH, known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()), Set.of());
+
+    private static final Lexicon GERMAN = german();
+
+    private final Language language;
+    private final Set<String> foreign;
+    /** The grammar's own words a vocabulary took from the English one for its phrases: not words of its language. */
+    private final Set<String> borrowed;
     private final Map<String, Entry> words;
     private final Map<String, List<String>> phrases;
     private final Set<String> phraseWords;
@@ -48,7 +59,14 @@ final class Lexicon {
     private final Speller speller;
     private final List<String> agentNames;
 
-    private Lexicon(Map<String, Entry> words, Map<String, List<String>> phrases, List<String> agentNames) {
+    /**
+     * @param foreign the words of the other language: no typo is corrected into a word of this language
+     *                when it is a word of that one
+     */
+    private Lexicon(Map<String, Entry> words, Map<String, List<String>> phrases, List<String> agentNames,
+                    Language language, Set<String> foreign, Set<String> borrowed) {
+        this.language = language;
+        this.borrowed = Set.copyOf(borrowed);
         this.words = Map.copyOf(words);
         this.phrases = Map.copyOf(phrases);
         this.longestPhrase = phrases.keySet().stream().mapToInt(p -> p.split(" ").length).max().orElse(1);
@@ -69,15 +87,53 @@ final class Lexicon {
             }
         }
         this.speller = new Speller(meanings);
+        Set<String> others = new HashSet<>(foreign);
+        others.removeAll(words.keySet());
+        others.removeAll(phraseWords);
+        this.foreign = Set.copyOf(others);
     }
 
-    /** The vocabulary with the paper's agents and these names. */
-    static Lexicon withAgents(Collection<String> names) {
-        if (names.isEmpty()) {
-            return BASE;
+    /** Every word of a vocabulary, its own and those of its phrases. */
+    private static Set<String> known(Map<String, Entry> words, Map<String, List<String>> phrases) {
+        Set<String> known = new HashSet<>(words.keySet());
+        phrases.keySet().forEach(phrase -> known.addAll(Arrays.asList(phrase.split(" "))));
+        return known;
+    }
+
+    /**
+     * The German vocabulary: German words and phrases, and the grammar's own words its phrases are
+     * read as ("in der Nähe des" is {@code near the}).
+     */
+    private static Lexicon german() {
+        Map<String, Entry> words = new HashMap<>(GERMAN_WORDS.words());
+        Set<String> borrowed = new HashSet<>();
+        for (List<String> meaning : GERMAN_WORDS.phrases().values()) {
+            for (String word : meaning) {
+                if (!words.containsKey(word) && !Character.isDigit(word.charAt(0))) {
+                    Entry english = ENGLISH_WORDS.words.get(word);
+                    if (english == null) {
+                        throw new IllegalStateException("a German phrase becomes unknown word '" + word + "'");
+                    }
+                    words.put(word, english);
+                    borrowed.add(word);
+                }
+            }
         }
-        Map<String, Entry> words = new HashMap<>(BASE.words);
-        List<String> known = new ArrayList<>(BASE.agentNames);
+        for (String name : PAPER_AGENTS) {
+            words.putIfAbsent(name.toLowerCase(Locale.ROOT), new Entry(Cat.NAME, name, false));
+        }
+        return new Lexicon(words, GERMAN_WORDS.phrases(), PAPER_AGENTS, Language.GERMAN,
+                known(ENGLISH_WORDS.words, ENGLISH_WORDS.phrases), borrowed);
+    }
+
+    /** The vocabulary of this language with the paper's agents and these names. */
+    static Lexicon withAgents(Collection<String> names, Language language) {
+        Lexicon base = language == Language.GERMAN ? GERMAN : BASE;
+        if (names.isEmpty()) {
+            return base;
+        }
+        Map<String, Entry> words = new HashMap<>(base.words);
+        List<String> known = new ArrayList<>(base.agentNames);
         for (String name : names) {
             String key = Tokenizer.tokens(name).stream().filter(Token::isWord).map(Token::text)
                     .reduce("", String::concat);
@@ -89,7 +145,35 @@ final class Lexicon {
             }
             words.putIfAbsent(key, new Entry(Cat.NAME, name.strip(), false));
         }
-        return new Lexicon(words, BASE.phrases, known);
+        return new Lexicon(words, base.phrases, known, language, base == GERMAN ? known(ENGLISH_WORDS.words,
+                ENGLISH_WORDS.phrases) : known(GERMAN_WORDS.words(), GERMAN_WORDS.phrases()), base.borrowed);
+    }
+
+    /** The language of this vocabulary. */
+    Language language() {
+        return language;
+    }
+
+    /** How many of these words are words of this language as written, not of the other language's too. */
+    int own(List<Token> tokens) {
+        int own = 0;
+        for (Token token : tokens) {
+            if (token.isWord() && isNative(token.text()) && !shared(token.text())) {
+                own++;
+            }
+        }
+        return own;
+    }
+
+    /** Whether a word is a word of this language, not one of the grammar's it borrowed. */
+    private boolean isNative(String word) {
+        return isKnown(word) && !borrowed.contains(word);
+    }
+
+    /** Whether a word is a word of both languages ("stop", "halt", the agents' names). */
+    private boolean shared(String word) {
+        Lexicon other = this.language == Language.GERMAN ? BASE : GERMAN;
+        return other != null && other.isNative(word);
     }
 
     /** The names of the agents this vocabulary knows, in the order they were given. */
@@ -117,8 +201,8 @@ final class Lexicon {
             Token token = tokens.get(i);
             String text = token.text();
             boolean corrected = false;
-            if (token.isWord() && !isKnown(text)) {
-                String correction = speller.correct(text);
+            if (token.isWord() && !isKnown(text) && !foreign.contains(text)) {
+                String correction = speller.correct(text); // never a word of the other language
                 if (correction != null) {
                     text = correction;
                     corrected = true;
@@ -154,7 +238,22 @@ final class Lexicon {
             }
         }
         lexemes.removeIf(lexeme -> lexeme.is(Cat.FILLER));
+        ordinals(lexemes);
         return lexemes;
+    }
+
+    /** Reads "2nd", "3rd", "4th" (a number, then its ending) as ordinals. */
+    private static void ordinals(List<Lexeme> lexemes) {
+        for (int i = lexemes.size() - 2; i >= 0; i--) {
+            Lexeme number = lexemes.get(i);
+            Lexeme ending = lexemes.get(i + 1);
+            if (number.is(Cat.NUMBER) && ending.is(Cat.UNKNOWN) && List.of("st", "nd", "rd", "th").contains(
+                    ending.lemma()) && number.number() == Math.rint(number.number())) {
+                lexemes.set(i, new Lexeme(Cat.ORD, number.lemma(), false, number.number(), number.raw() + ending.raw(),
+                        false, null, number.position()));
+                lexemes.remove(i + 1);
+            }
+        }
     }
 
     /** Reads "north east" as "northeast", so that phrases need to know only the one word. */
@@ -201,7 +300,7 @@ final class Lexicon {
         if (entry == null) {
             return new Lexeme(Cat.UNKNOWN, word, false, 0, raw, capitalised, corrected, position);
         }
-        double number = entry.cat() == Cat.NUMBER ? Double.parseDouble(entry.lemma()) : 0;
+        double number = entry.cat() == Cat.NUMBER || entry.cat() == Cat.ORD ? Double.parseDouble(entry.lemma()) : 0;
         return new Lexeme(entry.cat(), entry.lemma(), entry.plural(), number, raw, capitalised, corrected, position);
     }
 
@@ -234,7 +333,7 @@ final class Lexicon {
         private final Map<String, Entry> words = new LinkedHashMap<>();
         private final Map<String, List<String>> phrases = new LinkedHashMap<>();
 
-        Lexicon build() {
+        Builder build() {
             verbs();
             nouns();
             modifiers();
@@ -253,7 +352,7 @@ final class Lexicon {
                     }
                 }
             }
-            return new Lexicon(words, phrases, PAPER_AGENTS);
+            return this;
         }
 
         private void verbs() {
@@ -296,6 +395,11 @@ final class Lexicon {
             verb("do", "do", "make", "perform");
             irregular("do", "does", "did", "done", "made");
             verb("use", "use");
+            verb("leave", "leave", "ignore", "skip", "disregard", "spare");
+            verb("avoid", "avoid", "shun", "evade", "dodge");
+            verb("forget", "forget");
+            irregular("forget", "forgot", "forgotten", "forgetting");
+            verb("lift", "lift", "drop", "clear", "remove", "scrap", "revoke", "withdraw", "reset");
         }
 
         private void nouns() {
@@ -329,7 +433,7 @@ final class Lexicon {
             words(Cat.SIZE, "big", "big", "bigger", "large", "larger", "huge", "giant", "great", "tall", "taller",
                     "massive", "enormous", "fat", "high");
             words(Cat.SIZE, "small", "small", "smaller", "little", "tiny", "short", "shorter", "mini", "wee", "low");
-            words(Cat.SIZE, "largest", "largest", "biggest", "tallest", "hugest", "greatest");
+            words(Cat.SIZE, "largest", "largest", "biggest", "tallest", "greatest");
             words(Cat.SIZE, "smallest", "smallest", "tiniest", "littlest", "shortest");
             words(Cat.DIST, "highest", "highest", "topmost", "uppermost");
             words(Cat.DIST, "lowest", "lowest", "bottommost");
@@ -339,6 +443,19 @@ final class Lexicon {
             words(Cat.DIST, "westernmost", "westernmost", "westmost", "western");
             words(Cat.DIST, "nearest", "nearest", "closest", "nearer", "closer");
             words(Cat.DIST, "farthest", "farthest", "furthest", "farther", "further", "remotest");
+            words(Cat.DIST, "leftmost", "leftmost");
+            words(Cat.DIST, "rightmost", "rightmost");
+            String[] ordinals = {"third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth", "tenth",
+                "eleventh", "twelfth", "thirteenth", "fourteenth", "fifteenth", "sixteenth", "seventeenth",
+                "eighteenth", "nineteenth", "twentieth"};
+            for (int n = 0; n < ordinals.length; n++) {
+                put(ordinals[n], Cat.ORD, Integer.toString(n + 3)); // "second" is a unit of time too: see NounPhrases
+            }
+            words(Cat.RULE, "rule", "rule", "rules", "restriction", "restrictions", "constraint", "constraints",
+                    "limit", "limits", "condition", "conditions");
+            words(Cat.ONLY, "only", "only", "ony", "solely", "exclusively");
+            words(Cat.AGAIN, "again", "again");
+            words(Cat.COND, "when", "when", "whenever", "if", "unless");
             String[] numbers = {"zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
                 "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen",
                 "nineteen", "twenty"};
@@ -419,18 +536,18 @@ final class Lexicon {
         private void fillers() {
             for (String filler : List.of(
                     "please", "pls", "plz", "pleas", "kindly", "now", "quickly", "fast", "slowly", "carefully",
-                    "immediately", "soon", "again", "also", "too", "just", "really", "ok", "okay", "hey", "hi",
+                    "immediately", "soon", "also", "too", "just", "really", "ok", "okay", "hey", "hi",
                     "hello", "yo", "so", "well", "oh", "um", "uh", "alright", "thanks", "thx", "cheers", "buddy",
                     "mate", "friend", "pal", "dude", "you", "yourself", "i", "am", "is", "are", "be", "been", "was",
                     "have", "has", "had", "would", "could", "can", "should", "must", "shall", "may", "might", "will",
                     "which", "who", "lies", "lie", "lying", "hangs", "hang", "hanging", "sits", "sitting",
                     "located", "placed", "standing", "stands", "growing", "grows", "red", "yellow", "brown",
                     "green", "ripe", "juicy", "tasty", "delicious", "fresh", "lovely", "nice", "good", "yummy",
-                    "sweet", "old", "pretty", "beautiful", "whole", "single", "very", "only", "exactly", "no",
+                    "sweet", "old", "pretty", "beautiful", "whole", "single", "very", "exactly", "no", "alone", "be",
                     "yes", "first", "firstly", "initially", "finished", "other",
                     "instead", "asap", "right", "directly", "somewhere", "fell", "fallen", "dropped", "rests",
                     "resting",
-                    "rolled", "visible", "available", "closely", "due", "gently", "safely", "again")) {
+                    "rolled", "visible", "available", "closely", "due", "gently", "safely")) {
                 if (!words.containsKey(filler)) {
                     put(filler, Cat.FILLER, filler);
                 }
@@ -451,6 +568,81 @@ final class Lexicon {
                     "until i say so", "until i tell you", "until i tell you otherwise", "until further notice",
                     "until told", "until i come back", "until i return", "as well", "in place")) {
                 phrase(polite, "");
+            }
+            for (String polite : List.of("would you be so kind as to", "be so kind as to", "be so kind and",
+                    "would you be so kind and", "do me a favour and", "do me a favor and", "i would really like you to",
+                    "i would really like", "i really want you to", "i really need you to", "i would love you to",
+                    "i would love it if you would", "i would love it if you could", "it would be great if you could",
+                    "it would be nice if you could", "i wonder if you could", "i was wondering if you could")) {
+                phrase(polite, "");
+            }
+            // rules that last until lifted, and conditions
+            for (String lasting : List.of("from now on", "from now", "starting now", "from here on",
+                    "from here on in", "for the rest of the game", "for good", "any more", "any longer", "for now on",
+                    "until the end of the game", "till the end of the game", "for the whole game")) {
+                phrase(lasting, "lasting");
+            }
+            words(Cat.LASTING, "lasting", "lasting", "always", "henceforth", "hereafter", "anymore");
+            phrase("no more", "not lasting");
+            phrase("no longer", "not lasting");
+            phrase("nothing but", "only");
+            phrase("nothing except", "only");
+            for (String permit : List.of("you can", "you may", "you are allowed to", "you are free to",
+                    "feel free to", "it is ok to", "it is okay to", "it is fine to", "you are permitted to",
+                    "you can now", "you may now")) {
+                phrase(permit, "permit");
+            }
+            put("permit", Cat.PERMIT, "permit");
+            for (String condition : List.of("when", "whenever", "if", "as soon as", "each time", "every time",
+                    "any time", "anytime", "once", "in case", "should", "the moment", "every time that",
+                    "each time that")) {
+                for (String sight : List.of("see", "find", "spot", "notice", "meet", "encounter", "come across",
+                        "run into", "catch sight of", "come upon", "stumble upon", "discover")) {
+                    phrase(condition + " you " + sight, "when-see");
+                }
+            }
+            for (String there : List.of("if there is", "if there are", "whenever there is", "whenever there are",
+                    "when there is", "when there are")) {
+                phrase(there, "when-see");
+            }
+            put("when-see", Cat.COND, "when-see");
+            phrase("stay away from", "avoid near");
+            phrase("keep away from", "avoid near");
+            phrase("stay well away from", "avoid near");
+            phrase("keep well away from", "avoid near");
+            phrase("stay clear of", "avoid near");
+            phrase("keep clear of", "avoid near");
+            phrase("steer clear of", "avoid near");
+            phrase("keep your distance from", "avoid near");
+            phrase("keep off", "avoid");
+            phrase("stay off", "avoid");
+            phrase("stay out of", "avoid");
+            phrase("keep out of", "avoid");
+            phrase("keep to this side of", "wait this-side");
+            phrase("keep to this side", "wait this-side");
+            phrase("keep on this side of", "wait this-side");
+            phrase("keep on this side", "wait this-side");
+            phrase("keep to your side of", "wait this-side");
+            phrase("leave alone", "leave");
+            for (String side : List.of("left", "right")) {
+                phrase("from the " + side, side + "most");
+                phrase("from " + side, side + "most");
+                phrase("counting from the " + side, side + "most");
+                phrase("counted from the " + side, side + "most");
+                phrase("furthest to the " + side, side + "most");
+                phrase("farthest to the " + side, side + "most");
+            }
+            phrase("left most", "leftmost");
+            phrase("right most", "rightmost");
+            phrase("you can reach", "");
+            phrase("you are able to reach", "");
+            phrase("within reach", "");
+            phrase("go and stand", "go");
+            phrase("go stand", "go");
+            for (String direction : List.of("north", "south", "east", "west", "northeast", "northwest",
+                    "southeast", "southwest")) {
+                phrase("to the " + direction + " side of", "to " + direction + " of");
+                phrase("to the " + direction + " side", "to " + direction);
             }
             // connectives
             for (String then : List.of("and then", "after that", "after this", "and after that", "and afterwards",

@@ -16,7 +16,9 @@ final class Notation {
 
     static String of(Goal goal) {
         if (goal instanceof Sequence sequence) {
-            return sequence.steps().stream().map(Notation::of).collect(Collectors.joining("; "));
+            // a condition's own steps run to the end of the line: one inside a sequence is bracketed
+            return sequence.steps().stream().map(step -> step instanceof WhenSee ? "(" + of(step) + ")" : of(step))
+                    .collect(Collectors.joining("; "));
         }
         if (goal instanceof GoTo goTo) {
             return "go-to(" + of(goTo.destination()) + ")";
@@ -67,6 +69,21 @@ final class Notation {
         if (goal instanceof Ask ask) {
             return "ask(" + ask.topic().wireName() + (ask.about() == null ? "" : ", " + of(ask.about())) + ")";
         }
+        if (goal instanceof Avoid avoid) {
+            return "avoid(" + of(avoid.area()) + ")";
+        }
+        if (goal instanceof Leave leave) {
+            return "leave(" + of(leave.what()) + ")";
+        }
+        if (goal instanceof Only only) {
+            return "only(" + of(only.what()) + ")";
+        }
+        if (goal instanceof Lift lift) {
+            return lift.what() == null ? "lift" : "lift(" + of(lift.what()) + ")";
+        }
+        if (goal instanceof WhenSee when) {
+            return "when-see(" + of(when.what()) + "): " + of(when.then());
+        }
         throw new IllegalArgumentException("no notation for " + goal);
     }
 
@@ -75,6 +92,9 @@ final class Notation {
             return of(reference.place());
         }
         StringBuilder text = new StringBuilder();
+        if (reference.ordinal() != null) {
+            text.append(ordinal(reference.ordinal())).append(' ');
+        }
         if (reference.distance() != null) {
             text.append(reference.distance().wireName()).append(' ');
         }
@@ -82,6 +102,9 @@ final class Notation {
             text.append(reference.size().wireName()).append(' ');
         }
         text.append(reference.name() != null ? reference.name() : reference.kind().wireName());
+        if (reference.id() != null) {
+            text.append('#').append(reference.id());
+        }
         if (reference.place() != null) {
             text.append(' ').append(of(reference.place()));
         }
@@ -93,6 +116,17 @@ final class Notation {
             return "on-ground";
         }
         return place.relation().wireName() + "(" + (place.anchor() == null ? "here" : of(place.anchor())) + ")";
+    }
+
+    /** An ordinal as the notation writes it: 2nd, 3rd, 4th, 11th, 21st. */
+    static String ordinal(int n) {
+        String suffix = n % 100 >= 11 && n % 100 <= 13 ? "th" : switch (n % 10) {
+            case 1 -> "st";
+            case 2 -> "nd";
+            case 3 -> "rd";
+            default -> "th";
+        };
+        return n + suffix;
     }
 
     /** A number without needless digits: 90, 22.5, 0.333333. */

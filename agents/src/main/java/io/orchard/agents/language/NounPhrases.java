@@ -8,11 +8,13 @@ import static io.orchard.agents.language.Lexeme.Cat.ME;
 import static io.orchard.agents.language.Lexeme.Cat.NAME;
 import static io.orchard.agents.language.Lexeme.Cat.NOUN;
 import static io.orchard.agents.language.Lexeme.Cat.NUMBER;
+import static io.orchard.agents.language.Lexeme.Cat.ORD;
 import static io.orchard.agents.language.Lexeme.Cat.PREP;
 import static io.orchard.agents.language.Lexeme.Cat.PRON;
 import static io.orchard.agents.language.Lexeme.Cat.QUANT;
 import static io.orchard.agents.language.Lexeme.Cat.SIDE;
 import static io.orchard.agents.language.Lexeme.Cat.SIZE;
+import static io.orchard.agents.language.Lexeme.Cat.UNIT;
 import static io.orchard.agents.language.Lexeme.Cat.UNKNOWN;
 
 import io.orchard.agents.language.Place.Relation;
@@ -21,6 +23,7 @@ import io.orchard.agents.language.Reference.Kind;
 import io.orchard.agents.language.Reference.Size;
 import io.orchard.protocol.value.Sector;
 import java.util.Locale;
+import java.util.Optional;
 
 /**
  * Noun phrases and the places they are in: "the three nearest bananas", "the coconut in the big
@@ -71,7 +74,7 @@ final class NounPhrases {
     }
 
     /** The parts of a noun phrase read so far. */
-    private static final class Parts {
+    private final class Parts {
 
         Double number;
         boolean all;
@@ -86,6 +89,8 @@ final class NounPhrases {
         boolean ground;
         boolean area;
         Place place;
+        Integer ordinal;
+        Discourse.Mention pointed;
 
         Phrase phrase() {
             if (area) {
@@ -97,9 +102,18 @@ final class NounPhrases {
             } else if (ref != null && place != null && ref.kind() != Kind.PLACE) {
                 ref = ref.withPlace(place);
             }
+            if (ref != null && pointed != null && ref.kind() == pointed.kind()) {
+                ref = pointed.reference().withPlace(ref.place()); // "that table": the one the agent spoke of
+            }
             if (ref != null) {
                 ref = ref.withSize(size != null ? size : ref.size())
                         .withDistance(distance != null ? distance : ref.distance());
+                if (ordinal != null) {
+                    if (ref.size() == Size.LARGEST || ref.size() == Size.SMALLEST) {
+                        throw Refusal.answer(context.answers.ORDINAL_HOW);
+                    }
+                    ref = ref.withOrdinal(ordinal, ref.distance() != null ? ref.distance() : Distance.NEAREST);
+                }
             }
             double count;
             if (all) {
@@ -108,7 +122,8 @@ final class NounPhrases {
                 count = number;
             } else if (some) {
                 count = 3;
-            } else if (distance != null || size == Size.LARGEST || size == Size.SMALLEST || picked(place)) {
+            } else if (distance != null || ordinal != null || size == Size.LARGEST || size == Size.SMALLEST
+                    || picked(place)) {
                 count = 1;
             } else {
                 count = plural && (!any || head.raw().toLowerCase(Locale.ROOT).endsWith("s")) ? Collect.ALL : 1;
@@ -125,7 +140,10 @@ final class NounPhrases {
             Lexeme t = c.peek();
             if (t.is(DET)) {
                 c.next();
-                demonstrative(t, c);
+                Discourse.Mention pointed = demonstrative(t, c);
+                if (pointed != null) {
+                    parts.pointed = pointed;
+                }
                 if (t.is(DET, "a") && parts.number == null) {
                     if (t.raw().equalsIgnoreCase("any")) {
                         parts.any = true; // "any banana" is one, "any bananas" all that are found
@@ -159,32 +177,45 @@ final class NounPhrases {
 
     /**
      * "That table", "those trees": the person points at something the agent cannot see them point
-     * at, so unless the sentence named one of the kind before, the agent asks rather than guess.
+     * at. It is the one of that kind the sentence named before, else the last the agent spoke about
+     * or looked at (the {@link Discourse}); with neither, the agent asks rather than guess.
+     *
+     * @return the thing the agent spoke about, when that is what is meant; null otherwise
      */
-    private void demonstrative(Lexeme det, Cursor c) {
+    private Discourse.Mention demonstrative(Lexeme det, Cursor c) {
         Lexeme next = c.peek();
         if (!(det.raw().equalsIgnoreCase("that") || det.raw().equalsIgnoreCase("those")) || next == null
-                || !next.is(NOUN)) {
-            return;
+                || !next.is(NOUN) || Kind.ofWireName(next.lemma()) == null) {
+            return null;
         }
         Reference antecedent = context.antecedent;
-        if (antecedent == null || !antecedent.kind().wireName().equals(next.lemma())) {
-            throw Refusal.answer(String.format(Answers.DEMONSTRATIVE, det.raw() + " " + next.raw()));
+        Kind kind = Kind.ofWireName(next.lemma());
+        if (antecedent != null && antecedent.kind() == kind) {
+            return null;
         }
+        return context.discourse.last(kind).filter(m -> m.kind() == kind || kind == Kind.FRUIT)
+                .orElseThrow(() -> Refusal.answer(String.format(context.answers.DEMONSTRATIVE, det.raw() + " " + next.raw())));
     }
 
     /** Whether a place picks out one object of those that fit: "the fruit closest to the bridge". */
-    private static boolean picked(Place place) {
+    private boolean picked(Place place) {
         return place != null && (place.relation() == Relation.CLOSEST_TO
                 || place.relation() == Relation.FARTHEST_FROM);
     }
 
-    /** Sizes, distances and a late number: "the nearest two big". */
-    private static void modifiers(Cursor c, Parts parts) {
-        while (!c.atEnd() && (c.peek().is(SIZE) || c.peek().is(DIST)
+    /** Sizes, distances, ordinals and a late number: "the nearest two big", "the second". */
+    private void modifiers(Cursor c, Parts parts) {
+        while (!c.atEnd() && (c.peek().is(SIZE) || c.peek().is(DIST) || c.peek().is(ORD) || isSecond(c)
                 || (c.peek().is(NUMBER) && parts.number == null && !isHeadOne(c)))) {
             Lexeme t = c.next();
-            if (t.is(SIZE)) {
+            if (t.is(ORD)) {
+                parts.ordinal = (int) Math.min(Integer.MAX_VALUE, t.number());
+                if (parts.ordinal < 1 || parts.ordinal > Reference.MAX_ORDINAL) {
+                    throw Refusal.answer(context.answers.ORDINAL_HOW);
+                }
+            } else if (t.is(UNIT, "second")) {
+                parts.ordinal = 2;
+            } else if (t.is(SIZE)) {
                 parts.size = Size.valueOf(t.lemma().toUpperCase(Locale.ROOT));
             } else if (t.is(DIST)) {
                 parts.distance = Distance.valueOf(t.lemma().toUpperCase(Locale.ROOT));
@@ -299,8 +330,15 @@ final class NounPhrases {
         }
     }
 
+    /** Whether the "second" at the cursor is an ordinal ("the second tree") rather than a unit of time. */
+    private boolean isSecond(Cursor c) {
+        Lexeme next = c.peekAt(1);
+        return c.peekIs(UNIT, "second") && next != null && (next.is(NOUN) || next.is(SIZE) || next.is(DIST)
+                || next.is(PRON, "one"));
+    }
+
     /** Whether the "one" at the cursor is the head of its phrase ("the big one") rather than a count. */
-    private static boolean isHeadOne(Cursor c) {
+    private boolean isHeadOne(Cursor c) {
         Lexeme next = c.peekAt(1);
         return next == null || !(next.is(NOUN) || next.is(SIZE) || next.is(DIST) || next.is(PREP, "of")
                 || next.is(NAME));
@@ -318,8 +356,17 @@ final class NounPhrases {
         if (word.is(PRON, "one")) {
             return oneOf();
         }
+        if (context.antecedent == null) {
+            // nothing named in the sentence: what the agent spoke of last, fruit when fruit is wanted
+            Optional<Discourse.Mention> spoken = word.is(PRON, "him") ? context.discourse.last(Kind.AGENT)
+                    : context.answers.CAN_COLLECT.equals(context.hint) ? context.discourse.last(Kind.FRUIT)
+                    : context.discourse.last();
+            if (spoken.isPresent()) {
+                return spoken.get().reference();
+            }
+        }
         if (context.antecedent == null || (word.is(PRON, "him") && context.antecedent.kind() != Kind.AGENT)) {
-            throw Refusal.answer(Answers.pronoun(word.raw(), context.question));
+            throw Refusal.answer(context.answers.pronoun(word.raw(), context.question));
         }
         return context.antecedent;
     }

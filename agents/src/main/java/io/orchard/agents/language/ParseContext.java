@@ -16,15 +16,30 @@ final class ParseContext {
     /** The agent the sentence is addressed to, or null. */
     String addressee;
 
+    /** Whether the sentence says its rule lasts: "from now on". */
+    boolean lasting;
+
+    /** Whether the sentence says "again": with {@link #permit}, it lifts a rule. */
+    boolean again;
+
+    /** Whether the sentence gives leave: "you can", "you may". */
+    boolean permit;
+
+    /** What the agent spoke about or looked at last, for "that table" and "it". */
+    Discourse discourse = Discourse.NONE;
+
     /** What the sentence last referred to, or null. */
     Reference antecedent;
 
     /** The fruit the sentence last asked to collect, or null. */
     Reference lastCollected;
 
+    /** The answers in the language of the sentence. */
+    Answers answers = Answers.ENGLISH;
+
     /** What the agent can do, to answer "I didn't understand ..." in the clause being read. */
-    String hint = Answers.CAN_DO;
+    String hint = Answers.ENGLISH.CAN_DO;
 
     /** What to ask when a pronoun in the clause being read refers to nothing. */
-    String question = Answers.WHAT_PICK;
+    String question = Answers.ENGLISH.WHAT_PICK;
 }

@@ -27,12 +27,21 @@ final class Questions {
     /** The frames, tried in order; the first that matches the whole sentence wins. */
     private static final List<Map.Entry<Pattern, Topic>> FRAMES = new ArrayList<>();
 
+    /** The frames of German questions. */
+    private static final List<Map.Entry<Pattern, Topic>> GERMAN_FRAMES = new ArrayList<>();
+
+    private static final List<String> GERMAN_PREFIXES = List.of("hey", "ok", "okay", "also", "und", "bitte",
+            "sag mir", "sag mal", "kannst du mir sagen", "weisst du", "weißt du", "ich frage mich");
+
+    private static final List<String> GERMAN_SUFFIXES = List.of("bitte", "gerade", "jetzt", "eigentlich", "denn",
+            "im moment", "momentan", "gerade jetzt", "schon", "bis jetzt", "bisher");
+
     private static final List<String> PREFIXES = List.of("hey", "ok", "okay", "so", "and", "please", "could you please tell me",
             "could you tell me", "can you tell me", "can you please tell me", "would you mind telling me",
             "would you tell me", "please tell me", "tell me", "i wonder", "i would like to know", "let me know",
             "do you know", "do you happen to know");
 
-    private static final List<String> SUFFIXES = List.of("please", "now", "right now", "so far", "yet", "do you know",
+    private static final List<String> SUFFIXES = List.of("please", "right now", "now", "so far", "yet", "do you know",
             "at the moment", "then", "again", "exactly", "today", "here", "at all");
 
     private static final Speller SPELLER;
@@ -61,12 +70,40 @@ final class Questions {
                 + "|stopped moving|stop there)|why (are|do|did) not you .*|why are you not .*|what went wrong"
                 + "|why did (that|it) (fail|not work)|what happened|why are you (standing|waiting)( still)?");
         frame(Topic.CAN, "what can you do|what do you understand|what can i (say|ask)");
+        frame(Topic.RULES, "what are (your|the) (rules|restrictions|conditions)|(what|which) rules (do you have|are you "
+                + "(following|keeping|obeying))|do you have any rules|what (rules )?(did|have) i (told|tell|given|give) "
+                + "you|what are you not allowed to do|what must you (avoid|not do)|(tell me|list) your rules|your rules"
+                + "|what rules do you follow|any rules");
         frame(Topic.WHERE_IS, "where (is|are) " + X);
         frame(Topic.WHERE_IS, "where " + X + " (is|are)");
         frame(Topic.WHERE_IS, "have you seen( any| some)? " + X);
         frame(Topic.WHERE_IS, "(is|are) there( any| some)? " + X);
         frame(Topic.WHERE_IS, "what " + X + " do you know( of| about)?");
         frame(Topic.WHERE_IS, "what do you know (of|about) " + X);
+        german(Topic.SEE, "was (siehst du|kannst du sehen)( um dich herum| vor dir)?");
+        german(Topic.SEE, "(siehst|kannst) du( irgendwelche| eine| einen| ein| irgendeine| irgendeinen)? " + X
+                + "( sehen)?");
+        german(Topic.COLLECTED, "wie viele? " + X + " hast du( schon)?( gesammelt| gegessen| aufgehoben| eingesammelt"
+                + "| gepfluckt| genommen)?");
+        german(Topic.COLLECTED, "was hast du( schon)? (gesammelt|gegessen|aufgehoben|eingesammelt|genommen)"
+                + "|was (tragst|traegst) du( bei dir)?|wie (ist|sieht) dein punktestand( aus)?|wie viele punkte hast du");
+        german(Topic.COLLECTED, "hast du( schon)?( irgendwelche| eine| einen| ein)? " + X + " (gesammelt|gegessen"
+                + "|aufgehoben|genommen)");
+        german(Topic.WHERE, "wo bist du|wo befindest du dich|auf welcher seite des flusses bist du");
+        german(Topic.HEADING, "in welche richtung (schaust|blickst|siehst|gehst|guckst) du|wohin (schaust|blickst"
+                + "|guckst|siehst) du");
+        german(Topic.DOING, "was (machst|tust) du( da| gerade| jetzt)?( und warum)?|was hast du vor|woran arbeitest du"
+                + "|was ist deine aufgabe");
+        german(Topic.WHY, "warum hast du (angehalten|aufgehort|aufgehoert|aufgegeben|gestoppt)|warum (bewegst du "
+                + "dich|gehst du) nicht( mehr)?|was ist (schiefgegangen|passiert)|warum stehst du (still|herum|da)"
+                + "|warum hat (das|es) nicht (geklappt|funktioniert)");
+        german(Topic.CAN, "was kannst du( tun| machen)?|was verstehst du|was kann ich (sagen|fragen)");
+        german(Topic.RULES, "was sind deine regeln|welche regeln hast du|hast du regeln|was darfst du nicht( tun)?"
+                + "|(sag mir|nenn mir) deine regeln");
+        german(Topic.WHERE_IS, "wo (ist|sind|liegt|liegen|steht|stehen) " + X);
+        german(Topic.WHERE_IS, "hast du( irgendwelche| eine| einen| ein)? " + X + " gesehen");
+        german(Topic.WHERE_IS, "gibt es( hier)?( irgendwelche| eine| einen| ein)? " + X);
+        german(Topic.WHERE_IS, "wo " + X + " (ist|sind)");
         Map<String, String> words = new HashMap<>();
         for (String word : List.of("what", "where", "which", "why", "many", "much", "have", "tell", "could",
                 "would", "your", "there")) {
@@ -80,6 +117,10 @@ final class Questions {
 
     private static void frame(Topic topic, String regex) {
         FRAMES.add(Map.entry(Pattern.compile(regex), topic));
+    }
+
+    private static void german(Topic topic, String regex) {
+        GERMAN_FRAMES.add(Map.entry(Pattern.compile(regex), topic));
     }
 
     /** The question these tokens ask; empty when they are not a question the agents answer. */
@@ -101,25 +142,28 @@ final class Questions {
                 words.add(token);
             }
         }
+        boolean german = lexicon.language() == Language.GERMAN;
         List<String> text = new ArrayList<>();
         for (int i = 0; i < words.size(); i++) {
             String word = words.get(i).text();
-            String corrected = i < 2 ? SPELLER.correct(word) : null;
+            String corrected = i < 2 && !german ? SPELLER.correct(word) : null;
             text.add(corrected != null && lexicon.entry(word) == null ? corrected : word);
         }
+        List<String> prefixes = german ? GERMAN_PREFIXES : PREFIXES;
+        List<String> suffixes = german ? GERMAN_SUFFIXES : SUFFIXES;
         int from = 0;
         int to = text.size();
         boolean trimmed = true;
         while (trimmed) {
             trimmed = false;
-            for (String prefix : PREFIXES) {
+            for (String prefix : prefixes) {
                 List<String> said = List.of(prefix.split(" "));
                 if (to - from > said.size() && text.subList(from, from + said.size()).equals(said)) {
                     from += said.size();
                     trimmed = true;
                 }
             }
-            for (String suffix : SUFFIXES) {
+            for (String suffix : suffixes) {
                 List<String> said = List.of(suffix.split(" "));
                 if (to - from > said.size() && text.subList(to - said.size(), to).equals(said)) {
                     to -= said.size();
@@ -128,7 +172,7 @@ final class Questions {
             }
         }
         String sentence = String.join(" ", text.subList(from, to));
-        for (Map.Entry<Pattern, Topic> frame : FRAMES) {
+        for (Map.Entry<Pattern, Topic> frame : german ? GERMAN_FRAMES : FRAMES) {
             Matcher matcher = frame.getKey().matcher(sentence);
             if (matcher.matches()) {
                 List<Tokenizer.Token> about = List.of();

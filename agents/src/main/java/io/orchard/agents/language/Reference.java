@@ -28,23 +28,35 @@ import java.util.Objects;
  * </ul>
  *
  * <p>How many objects an instruction wants is not part of the reference but of the goal that
- * uses it ({@link Collect#count()}).
+ * uses it ({@link Collect#count()}). Two parts pick one object more narrowly still:
+ * <ul>
+ *   <li>{@link #ordinal()}: which one, counted in the order of {@link #distance()}: "the second
+ *       table from the left" is the 2nd {@link Distance#LEFTMOST}, "the third tree" the 3rd
+ *       {@link Distance#NEAREST};</li>
+ *   <li>{@link #id()}: the very object, by the world's id ("T3"): a demonstrative ("that table")
+ *       resolved from what the agent last spoke about, or what a condition's "it" stands for.</li>
+ * </ul>
  *
  * @param kind     what sort of thing it is
  * @param name     the agent's name when {@code kind} is {@link Kind#AGENT} and a name was given
  * @param size     its size, if the instruction said one
- * @param distance nearest or farthest, if the instruction said one
+ * @param distance which one to choose, or the order to count in, if the instruction said one
  * @param place    where it is, if the instruction said where
+ * @param ordinal  the place in the order of {@code distance}, 2 or more (the first is the one
+ *                 {@code distance} picks: 1 is kept as null); null when none was said
+ * @param id       the world's id of the one object meant; null for a description
  */
 public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @Nullable Distance distance,
-                        @Nullable Place place) {
+                        @Nullable Place place, @Nullable Integer ordinal, @Nullable String id) {
+
+    /** The largest ordinal understood: "the twentieth tree". */
+    public static final int MAX_ORDINAL = 20;
 
     /**
-     * @throws NullPointerException     when {@code kind} is null
-     * @throws IllegalArgumentException when a name is given for a kind other than an agent, the name
-     *                                  is blank, or a {@link Kind#PLACE} reference has no place
+     * Checks the components; a bad value is refused with an exception that names it: a name for a kind other
+     * than an agent, a blank name, a {@link Kind#PLACE} reference without a place, an ordinal without an order
+     * or out of range, an id for a kind without ids.
      */
-    /** Checks the components; a bad value is refused with an exception that names it. */
     public Reference {
         Objects.requireNonNull(kind, "kind");
         if (name != null && kind != Kind.AGENT) {
@@ -57,6 +69,26 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         if (kind == Kind.PLACE && place == null) {
             throw new IllegalArgumentException("a PLACE reference needs a place, such as near the castle");
         }
+        if (ordinal != null && ordinal == 1) {
+            ordinal = null; // the first is the one the distance picks
+        }
+        if (ordinal != null && (ordinal < 1 || ordinal > MAX_ORDINAL)) {
+            throw new IllegalArgumentException("an ordinal must be 1 to " + MAX_ORDINAL + ", was " + ordinal);
+        }
+        if (ordinal != null && distance == null) {
+            throw new IllegalArgumentException("an ordinal counts in an order, such as nearest or leftmost; "
+                    + "the distance is missing for ordinal " + ordinal);
+        }
+        if (id != null && (id.isBlank() || !kind.hasIds())) {
+            throw new IllegalArgumentException("an id names one fruit, tree, table or bridge, not a " + kind.wireName()
+                    + "; was '" + id + "'");
+        }
+    }
+
+    /** A reference without an ordinal or an id. */
+    public Reference(Kind kind, @Nullable String name, @Nullable Size size, @Nullable Distance distance,
+                     @Nullable Place place) {
+        this(kind, name, size, distance, place, null, null);
     }
 
     /** Any object of this kind: "a tree", "the castle", "fruit". */
@@ -74,19 +106,29 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         return new Reference(Kind.PLACE, null, null, null, Objects.requireNonNull(place, "place"));
     }
 
-    /** This reference with the given size (null for none). */
-    public Reference withSize(@Nullable Size size) {
-        return new Reference(kind, name, size, distance, place);
+    /** The one object of this kind with this world's id: "the table T3". */
+    public static Reference thing(Kind kind, String id) {
+        return new Reference(kind, null, null, null, null, null, Objects.requireNonNull(id, "id"));
     }
 
-    /** This reference with the given distance (null for none). */
+    /** This reference with the given size (null for none). */
+    public Reference withSize(@Nullable Size size) {
+        return new Reference(kind, name, size, distance, place, ordinal, id);
+    }
+
+    /** This reference with the given distance (null for none); an ordinal goes with the distance it counted in. */
     public Reference withDistance(@Nullable Distance distance) {
-        return new Reference(kind, name, size, distance, place);
+        return new Reference(kind, name, size, distance, place, distance == null ? null : ordinal, id);
     }
 
     /** This reference with the given place (null for none). */
     public Reference withPlace(@Nullable Place place) {
-        return new Reference(kind, name, size, distance, place);
+        return new Reference(kind, name, size, distance, place, ordinal, id);
+    }
+
+    /** This reference counting in the order of {@code distance} to the {@code ordinal}-th: "the second from the left". */
+    public Reference withOrdinal(int ordinal, Distance distance) {
+        return new Reference(kind, name, size, Objects.requireNonNull(distance, "distance"), place, ordinal, id);
     }
 
     /** Whether this refers to fruit: any fruit, or tomatoes, bananas or coconuts. */
@@ -169,6 +211,11 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
             return objectKind;
         }
 
+        /** Whether the world gives objects of this kind ids: fruit ("F12"), trees, tables and bridges. */
+        public boolean hasIds() {
+            return isFruit() || this == TREE || this == TABLE || this == BRIDGE;
+        }
+
         /** The kind whose {@link #wireName()} is this, or null. */
         static @Nullable Kind ofWireName(String wireName) {
             for (Kind kind : values()) {
@@ -220,7 +267,14 @@ public record Reference(Kind kind, @Nullable String name, @Nullable Size size, @
         /** The farthest to the east: "the eastern table". */
         EASTERNMOST,
         /** The farthest to the west: "the westernmost tree". */
-        WESTERNMOST;
+        WESTERNMOST,
+        /**
+         * The farthest to the left, as the agent stood and faced when told: "the leftmost table",
+         * counted "from the left". Only what lies ahead of the agent is counted, when anything fits there.
+         */
+        LEFTMOST,
+        /** The farthest to the right, as the agent faced when told: "the second tree from the right". */
+        RIGHTMOST;
 
         /** The name of this choice in JSON and in the notation: {@code nearest}, {@code northernmost}, ... */
         public String wireName() {

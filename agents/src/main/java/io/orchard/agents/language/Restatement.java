@@ -2,6 +2,8 @@ package io.orchard.agents.language;
 
 import io.orchard.agents.language.Reference.Kind;
 import io.orchard.agents.language.Reference.Size;
+import java.util.List;
+import java.util.Map;
 
 /**
  * The agent's English restatement of a goal: "Going to pick up the nearest banana that lies on a
@@ -19,10 +21,22 @@ final class Restatement {
 
     static String of(Goal goal) {
         String text;
-        if (goal instanceof Sequence sequence) {
-            StringBuilder steps = new StringBuilder(lead(sequence.steps().get(0)));
-            for (Goal step : sequence.steps().subList(1, sequence.steps().size())) {
-                steps.append(", then ").append(gerund(step));
+        if (goal instanceof Rule || goal instanceof Lift) {
+            text = rule(goal);
+        } else if (goal instanceof Sequence sequence) {
+            StringBuilder steps = new StringBuilder();
+            Goal previous = null;
+            for (Goal step : sequence.steps()) {
+                boolean rule = step instanceof Rule || step instanceof Lift;
+                boolean afterRule = previous instanceof Rule || previous instanceof Lift;
+                if (previous == null) {
+                    steps.append(rule ? rule(step) : lead(step));
+                } else if (rule || afterRule) {
+                    steps.append("; ").append(rule ? rule(step) : lead(step)); // a rule holds, not a step in turn
+                } else {
+                    steps.append(", then ").append(gerund(step));
+                }
+                previous = step;
             }
             text = steps.toString();
         } else {
@@ -30,6 +44,115 @@ final class Restatement {
         }
         return Character.toUpperCase(text.charAt(0)) + text.substring(1) + ".";
     }
+
+    /** A rule as the agent takes it on: "from now on I won't go near the river". */
+    static String rule(Goal goal) {
+        if (goal instanceof Avoid avoid) {
+            return "from now on I" + avoided(avoid.area());
+        }
+        if (goal instanceof Leave leave) {
+            return "from now on I'll leave " + every(leave.what()) + " alone";
+        }
+        if (goal instanceof Only only) {
+            return "from now on I'll collect only " + phrase(only.what(), Collect.ALL, true);
+        }
+        if (goal instanceof WhenSee when) {
+            return "from now on, whenever I see " + noun(when.what()) + ", I'll " + infinitive(when.then(), when.what());
+        }
+        if (goal instanceof Lift lift) {
+            if (lift.what() == null) {
+                return "all right: I've forgotten all my rules";
+            }
+            return "all right: I may " + (lift.what().isFruit() ? "take " + phrase(lift.what(), Collect.ALL, true)
+                    : "go " + where(lift.what())) + " again";
+        }
+        return lead(goal);
+    }
+
+    /** A rule as it holds: "I don't go near the river", "whenever I see a banana, I pick it up". */
+    static String statement(Rule rule) {
+        String text = rule(rule);
+        text = text.startsWith("from now on, ") ? text.substring("from now on, ".length())
+                : text.startsWith("from now on ") ? text.substring("from now on ".length()) : text;
+        return text.replace("I won't ", "I don't ").replace("I'll ", "I ").replace("I I ", "I ");
+    }
+
+    /** A rule as a reason: "your rule not to go near the river", "your rule to leave the coconuts alone". */
+    static String reason(Rule rule) {
+        if (rule instanceof Avoid avoid) {
+            String avoided = avoided(avoid.area());
+            return avoided.startsWith("'ll ") ? "your rule to " + avoided.substring(4)
+                    : "your rule not to " + avoided.substring(" won't ".length());
+        }
+        if (rule instanceof Leave leave) {
+            return "your rule to leave " + every(leave.what()) + " alone";
+        }
+        if (rule instanceof Only only) {
+            return "your rule to collect only " + phrase(only.what(), Collect.ALL, true);
+        }
+        return "your rule that " + statement(rule);
+    }
+
+    /** What a rule to avoid an area keeps the agent from: "won't go near the river", "'ll stay on this side of the river". */
+    private static String avoided(Reference area) {
+        Place place = area.place();
+        if (area.kind() == Kind.PLACE && place.relation() == Place.Relation.BEYOND && place.anchor() != null
+                && (place.anchor().kind() == Kind.RIVER || place.anchor().kind() == Kind.BRIDGE)) {
+            return "'ll stay on this side of " + noun(place.anchor());
+        }
+        return " won't go " + where(area);
+    }
+
+    /** Where "go" leads, for an area: "near the river", "into the forest", "to the castle", "north of the castle". */
+    static String where(Reference area) {
+        if (area.kind() == Kind.FOREST) {
+            return "into " + noun(area);
+        }
+        if (area.kind() != Kind.PLACE) {
+            return "to " + noun(area);
+        }
+        String destination = destination(area);
+        return destination.startsWith("to the area ") ? destination.substring("to the area ".length()) : destination;
+    }
+
+    /** Fruit as a rule names all of it: "the coconuts", "the tomatoes on the tables". */
+    private static String every(Reference what) {
+        return (what.kind() == Kind.FRUIT && what.place() == null ? "" : "the ") + phrase(what, Collect.ALL, true);
+    }
+
+    /**
+     * What a condition does, as "I'll ..." goes on: "pick it up", "go there", "follow him", "pick it up, then come
+     * back". The thing seen is "it" (or "him", "there").
+     */
+    private static String infinitive(Goal then, Reference seen) {
+        List<Goal> steps = then instanceof Sequence sequence ? sequence.steps() : List.of(then);
+        StringBuilder text = new StringBuilder();
+        for (Goal step : steps) {
+            if (text.length() > 0) {
+                text.append(", then ");
+            }
+            String gerund = gerund(step);
+            String noun = noun(seen);
+            String pronoun = seen.kind() == Kind.AGENT ? "him" : "it";
+            gerund = gerund.replace("going to " + noun, "going there").replace("picking up " + noun,
+                    "picking " + pronoun + " up");
+            if (!(seen.kind() == Kind.AGENT && seen.name() != null)) {
+                gerund = gerund.replace(noun, pronoun);
+            } else {
+                gerund = gerund.replace(" " + noun, " " + pronoun);
+            }
+            int space = gerund.indexOf(' ');
+            String verb = space < 0 ? gerund : gerund.substring(0, space);
+            text.append(INFINITIVES.getOrDefault(verb, verb)).append(space < 0 ? "" : gerund.substring(space));
+        }
+        return text.toString();
+    }
+
+    private static final Map<String, String> INFINITIVES = Map.ofEntries(Map.entry("going", "go"),
+            Map.entry("picking", "pick"), Map.entry("crossing", "cross"), Map.entry("heading", "head"),
+            Map.entry("stepping", "step"), Map.entry("coming", "come"), Map.entry("turning", "turn"),
+            Map.entry("looking", "look"), Map.entry("exploring", "explore"), Map.entry("following", "follow"),
+            Map.entry("stopping", "stop"), Map.entry("waiting", "wait"));
 
     /** The first step as the agent announces it: "going to pick up a tomato". */
     private static String lead(Goal goal) {
@@ -121,12 +244,18 @@ final class Restatement {
             case WHERE_IS -> "where " + searched(ask.about()) + (plural(ask.about()) ? " are" : " is");
             case CAN -> "what I can do";
             case HEADING -> "which way I face";
+            case RULES -> "what my rules are";
         };
     }
 
     private static boolean plural(Reference reference) {
         return reference.isFruit() && reference.distance() == null && reference.size() != Size.LARGEST
                 && reference.size() != Size.SMALLEST;
+    }
+
+    /** Every object of a reference, without an article: "coconuts that lie on a table". */
+    static String many(Reference reference) {
+        return phrase(reference, Collect.ALL, true);
     }
 
     /** One object of a reference, with its article: "a tree", "the castle", "the nearest banana on a table". */
@@ -153,7 +282,12 @@ final class Restatement {
         }
         boolean plural = count > 1;
         StringBuilder core = new StringBuilder();
-        if (reference.distance() != null) {
+        boolean fromSide = reference.distance() == Reference.Distance.LEFTMOST
+                || reference.distance() == Reference.Distance.RIGHTMOST;
+        if (reference.ordinal() != null) {
+            core.append(ordinal(reference.ordinal())).append(' ');
+        }
+        if (reference.distance() != null && !(fromSide && reference.ordinal() != null)) {
             core.append(reference.distance().wireName()).append(' ');
         }
         if (reference.size() != null) {
@@ -163,6 +297,12 @@ final class Restatement {
             core.append(reference.name());
         } else {
             core.append(plural ? plural(reference.kind()) : reference.kind().wireName());
+        }
+        if (reference.id() != null) {
+            core.append(' ').append(reference.id());
+        }
+        if (fromSide && reference.ordinal() != null) {
+            core.append(reference.distance() == Reference.Distance.LEFTMOST ? " from the left" : " from the right");
         }
         if (reference.place() != null) {
             core.append(' ').append(relation(reference.place(), reference.isFruit(), plural));
@@ -174,7 +314,7 @@ final class Restatement {
         if (count == Collect.ALL) {
             return bare ? text : "all the " + text;
         }
-        boolean definite = reference.distance() != null || picked(reference.place()) || reference.size() == Size.LARGEST
+        boolean definite = reference.distance() != null || reference.id() != null || picked(reference.place()) || reference.size() == Size.LARGEST
                 || reference.size() == Size.SMALLEST || reference.kind() == Kind.CASTLE
                 || reference.kind() == Kind.RIVER || reference.kind() == Kind.FOREST;
         if (plural) {
@@ -279,6 +419,15 @@ final class Restatement {
             default -> anchor == null ? "the " + place.relation().sector().wireName()
                     : "the area " + place.relation().sector().wireName() + " of " + noun(anchor);
         };
+    }
+
+    private static final String[] ORDINALS = {"zeroth", "first", "second", "third", "fourth", "fifth", "sixth",
+        "seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth", "thirteenth", "fourteenth", "fifteenth",
+        "sixteenth", "seventeenth", "eighteenth", "nineteenth", "twentieth"};
+
+    /** "second", "third", ... */
+    static String ordinal(int n) {
+        return n < ORDINALS.length ? ORDINALS[n] : Notation.ordinal(n);
     }
 
     private static String turning(double degrees) {

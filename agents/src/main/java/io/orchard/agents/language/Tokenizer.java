@@ -48,6 +48,12 @@ final class Tokenizer {
     }
 
     static List<Token> tokens(String sentence) {
+        return tokens(sentence, Language.ENGLISH);
+    }
+
+    /** The tokens of a sentence in this language: English contractions are spelt out only in English. */
+    static List<Token> tokens(String sentence, Language language) {
+        boolean english = language == Language.ENGLISH;
         String text = Normalizer.normalize(sentence, Normalizer.Form.NFKC);
         List<Token> tokens = new ArrayList<>();
         int i = 0;
@@ -55,7 +61,7 @@ final class Tokenizer {
             int c = text.codePointAt(i);
             if (Character.isLetter(c)) {
                 int end = wordEnd(text, i);
-                addWord(text.substring(i, end), tokens);
+                addWord(text.substring(i, end), tokens, english);
                 i = end;
             } else if (Character.isDigit(c)) {
                 int end = numberEnd(text, i);
@@ -127,7 +133,7 @@ final class Tokenizer {
         }
     }
 
-    private static void addWord(String raw, List<Token> tokens) {
+    private static void addWord(String raw, List<Token> tokens, boolean english) {
         boolean capitalised = Character.isUpperCase(raw.codePointAt(0));
         String word = stripAccents(raw).toLowerCase(Locale.ROOT);
         StringBuilder plain = new StringBuilder(word.length());
@@ -139,7 +145,7 @@ final class Tokenizer {
                 plain.append(c);
             }
         }
-        for (String part : spellOut(plain.toString()).split(" ")) {
+        for (String part : (english ? spellOut(plain.toString()) : plain.toString().replace("'", "")).split(" ")) {
             if (!part.isEmpty()) {
                 tokens.add(new Token(part, raw, Type.WORD, capitalised));
             }

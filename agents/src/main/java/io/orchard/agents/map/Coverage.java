@@ -6,6 +6,7 @@ import io.orchard.protocol.value.Sight;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Predicate;
 
 /**
  * Which parts of the world the agent has looked at: a grid of {@value #CELL}-unit cells, each seen
@@ -28,6 +29,7 @@ public final class Coverage {
     private final boolean[] seen;
     private final boolean[] givenUp;
     private int seenCount;
+    private Predicate<Point2> excluded = cell -> false;
 
     /** An empty coverage of the world's bounds. */
     public Coverage(Bounds bounds) {
@@ -74,15 +76,27 @@ public final class Coverage {
         return (double) seenCount / seen.length;
     }
 
-    /** The centres of the cells neither seen nor given up. */
+    /** The centres of the cells neither seen, nor given up, nor excluded. */
     public List<Point2> unseen() {
         List<Point2> cells = new ArrayList<>();
         for (int i = 0; i < seen.length; i++) {
             if (!seen[i] && !givenUp[i]) {
-                cells.add(centre(i));
+                Point2 centre = centre(i);
+                if (!excluded.test(centre)) {
+                    cells.add(centre);
+                }
             }
         }
         return cells;
+    }
+
+    /**
+     * Leaves out of {@link #unseen()} the cells whose centre this excludes, for as long as it does: the
+     * areas the agent was told not to enter ({@link Conduct}). Unlike a cell given up, an excluded
+     * cell is offered again once the rule is lifted.
+     */
+    public void exclude(Predicate<Point2> cells) {
+        this.excluded = java.util.Objects.requireNonNull(cells, "cells");
     }
 
     /** Gives up the cell holding the point: it will not be offered by {@link #unseen()} again. */

@@ -41,7 +41,8 @@ import java.util.Set;
  *   <li>an estimate of where the castle is, from its compass sectors ({@link #castle()});
  *   <li>which cells of the world have been looked at ({@link #coverage()});
  *   <li>where the agent has stood, ground known to be walkable ({@link #trail()});
- *   <li>what rejected moves taught ({@link #learned()}).
+ *   <li>what rejected moves taught ({@link #learned()});
+ *   <li>the rules a person set, which hold until lifted ({@link #conduct()}).
  * </ul>
  *
  * <p>{@link #terrainVersion()} grows whenever something that changes where the agent can walk
@@ -66,6 +67,7 @@ public final class WorldMemory {
     private final Coverage coverage;
     private final Trail trail;
     private final List<LearnedBlock> learned = new ArrayList<>();
+    private final Conduct conduct = new Conduct();
     private List<SeenAgent> agents = List.of();
     private Sector castleSector;
     private Point2 position;
@@ -92,6 +94,7 @@ public final class WorldMemory {
         this.sight = Objects.requireNonNull(sight, "sight");
         this.castle = new CastleEstimate(bounds);
         this.coverage = new Coverage(bounds);
+        this.coverage.exclude(conduct::forbids);
         this.trail = new Trail(bounds);
     }
 
@@ -308,13 +311,18 @@ public final class WorldMemory {
         return Collections.unmodifiableList(learned);
     }
 
-    /** Grows whenever something that changes where the agent can walk changes. */
+    /** The rules a person set that hold until lifted: where the agent must not go, what it must not take. */
+    public Conduct conduct() {
+        return conduct;
+    }
+
+    /** Grows whenever something that changes where the agent can walk changes, a rule about places included. */
     public long terrainVersion() {
         if ((castle.bounded() || castle.located()) && castle.version() != castleVersionSeen) {
             castleVersionSeen = castle.version();
             terrainVersion++; // the castle counts for walking only once it is near or located
         }
-        return terrainVersion + river.version();
+        return terrainVersion + river.version() + conduct.version();
     }
 
     /** Grows whenever a fruit is first seen or known to be gone. */

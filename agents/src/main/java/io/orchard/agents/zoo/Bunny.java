@@ -183,6 +183,9 @@ public final class Bunny extends AgentController {
         if (until != null && until > time()) {
             return false;
         }
+        if (!memory().fruit(fruit.id()).map(memory().conduct()::allows).orElse(true)) {
+            return false; // a person's rule: "leave the bananas"
+        }
         double y = fruit.position().y();
         return y >= bodyInForce().gripper().minHeight() + 0.006 && y <= bodyInForce().gripper().maxHeight() - 0.006;
     }
@@ -225,11 +228,16 @@ public final class Bunny extends AgentController {
             Point2 a = perception.toWorld(bridge.entryA());
             Point2 b = perception.toWorld(bridge.entryB());
             if (crossing == null) {
-                crossing = bridge.id();
                 Point2 far = here.distance(a) <= here.distance(b) ? b : a;
                 Point2 near = far == a ? b : a;
                 double length = near.distance(far);
-                farBank = new Point2(far.x() + (far.x() - near.x()) / length * 3, far.z() + (far.z() - near.z()) / length * 3);
+                Point2 beyond = new Point2(far.x() + (far.x() - near.x()) / length * 3,
+                        far.z() + (far.z() - near.z()) / length * 3);
+                if (memory().conduct().forbids(beyond)) {
+                    continue; // a person's rule keeps it on this bank
+                }
+                crossing = bridge.id();
+                farBank = beyond;
             }
             Point2 near = here.distance(a) <= here.distance(b) ? a : b;
             boolean onIt = distanceToSegment(here, a, b) < bridge.width() / 2 - bodyInForce().radius();

@@ -3,6 +3,7 @@ package io.orchard.agents.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.Score;
 import io.orchard.server.WorldServer;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
@@ -11,6 +12,8 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -41,10 +44,12 @@ class AgentMainTest {
         void theHelpListsEveryOption() throws Exception {
             assertThat(AgentMain.agentHelp()).contains("Usage: orchard agent [OPTIONS]", "--type=TYPE",
                     "dwarf, robot, bunny, guppy, roadrunner", "--name=NAME", "--host=HOST", "--port=N", "--resume-tokens=FILE",
-                    "--language-model=URL", "--language-model-name=MODEL", "--language-model-timeout=SECONDS",
+                    "--language=CODE", "--language-model=URL", "--language-model-name=MODEL",
+                    "--language-model-timeout=SECONDS",
                     "(default: " + Path.of(System.getProperty("user.home"), ".orchard", "resume-tokens"), "--help");
+            assertThat(AgentMain.agentHelp()).contains("--next-games");
             assertThat(AgentMain.agentsHelp()).contains("Usage: orchard agents [OPTIONS]", "--host=HOST", "--port=N",
-                    "--resume-tokens=FILE")
+                    "--resume-tokens=FILE", "--next-games", "--language=CODE")
                     .doesNotContain("--type");
             assertThat(AgentMain.agent(List.of("--help"), console(""), print(out), print(err))).isZero();
             assertThat(out()).contains("Usage: orchard agent");
@@ -62,6 +67,7 @@ class AgentMainTest {
             name no model   | agents | --language-model-name llama3.2 | orchard agents: --language-model-name needs --language-model URL
             model bad url   | agent  | --type bunny --language-model localhost:11434 --language-model-name m | orchard agent: invalid value for option '--language-model': 'localhost:11434' (expected an http or https address such as http://localhost:11434/v1)
             model timeout   | agents | --language-model http://h/v1 --language-model-name m --language-model-timeout 0 | orchard agents: invalid value for option '--language-model-timeout': '0.0' (expected seconds, more than 0 and at most 600)
+            language        | agent  | --type bunny --language fr | orchard agent: invalid value for option '--language': 'fr' (expected en or de)
             """)
         void wrongCommandLinesAreNamedAndExitWithTwo(String name, String command, String line, String message) {
             List<String> args = line == null ? List.of() : List.of(line.split(" "));
@@ -119,6 +125,28 @@ class AgentMainTest {
             assertThat(out()).contains("Dwarf, Robot, Bunny, Guppy, Roadrunner are connecting to 127.0.0.1:", "Dwarf: Stopping.",
                     "Roadrunner: Carrying on by myself.", "Guppy: Turning left.", "Start the line with the agent's name",
                     "Game over", "Bunny: ");
+        }
+
+        @Test
+        void withNextGamesAllFiveComeBackForEachGameTheOperatorRestartsAndLeaveWithTheServer() throws Exception {
+            CompletableFuture<Integer> status;
+            List<Score> second;
+            try (WorldServer server = WorldServer.builder().port(0).seed(1998).clock(ClockMode.LOCKSTEP).timeLimit(1)
+                    .waitFor(5).start()) {
+                status = CompletableFuture.supplyAsync(() -> AgentMain.agents(List.of("--host", "127.0.0.1", "--port",
+                        String.valueOf(server.port()), "--resume-tokens", tokens.resolve("resume-tokens").toString(),
+                        "--next-games"), console(""), print(out), print(err)));
+                List<Score> first = server.gameOver().get(60, TimeUnit.SECONDS);
+                assertThat(first).hasSize(5);
+
+                server.restart(7);
+                second = server.gameOver().get(60, TimeUnit.SECONDS);
+                assertThat(status).as("the agents stay for the next game").isNotDone();
+            }
+            assertThat(status.get(30, TimeUnit.SECONDS)).as(err.toString(StandardCharsets.UTF_8)).isZero();
+            assertThat(second).extracting(Score::agent)
+                    .containsExactlyInAnyOrder("Dwarf", "Robot", "Bunny", "Guppy", "Roadrunner");
+            assertThat(out()).contains("Game over (time limit reached). Ranking:");
         }
     }
 }

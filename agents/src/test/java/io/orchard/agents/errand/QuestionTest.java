@@ -3,6 +3,7 @@ package io.orchard.agents.errand;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.agents.language.GoTo;
+import io.orchard.agents.language.Language;
 import io.orchard.agents.language.Reference;
 import io.orchard.agents.map.Views;
 import io.orchard.agents.map.WorldMemory;
@@ -29,7 +30,7 @@ class QuestionTest {
         Grounding grounding = grounder.ground(tree);
         assertThat(grounding).isInstanceOf(Grounding.Ambiguous.class);
         question = new Question(new GoTo(tree), Reference.Kind.TREE, ((Grounding.Ambiguous) grounding).choices(),
-                memory, grounder);
+                memory, grounder, new Speech(Language.ENGLISH));
     }
 
     @Test
@@ -38,6 +39,22 @@ class QuestionTest {
                 + "1: the nearer one, 15 m to the east, the right one (T2); "
                 + "2: the farther one, 20 m to the north, the left one (T1). "
                 + "Say 'the nearer one', a direction or a number.");
+    }
+
+    @Test
+    void inGermanTheQuestionIsAskedAndAnsweredInGerman() {
+        Reference tree = Reference.to(Reference.Kind.TREE);
+        Question german = new Question(new GoTo(tree), Reference.Kind.TREE,
+                ((Grounding.Ambiguous) grounder.ground(tree)).choices(), memory, grounder, new Speech(Language.GERMAN));
+
+        assertThat(german.text()).isEqualTo("Welchen Baum meinst du? "
+                + "1: den näheren, 15 m Richtung Osten, den rechten (T2); "
+                + "2: den weiteren, 20 m Richtung Norden, den linken (T1). "
+                + "Sag 'den näheren', eine Richtung oder eine Zahl.");
+        assertThat(german.read("den näheren")).map(Known::id).contains("T2");
+        assertThat(german.read("den linken")).map(Known::id).contains("T1");
+        assertThat(german.read("den im Norden")).map(Known::id).contains("T1");
+        assertThat(german.read("den zweiten")).map(Known::id).contains("T1");
     }
 
     @ParameterizedTest(name = "\"{0}\" means {1}")
@@ -54,7 +71,7 @@ class QuestionTest {
         Views.from(0, 0, 0).tree("T3", -40, 0, 2).into(memory);
         Reference tree = Reference.to(Reference.Kind.TREE);
         Question three = new Question(new GoTo(tree), Reference.Kind.TREE,
-                ((Grounding.Ambiguous) grounder.ground(tree)).choices(), memory, grounder);
+                ((Grounding.Ambiguous) grounder.ground(tree)).choices(), memory, grounder, new Speech(Language.ENGLISH));
 
         assertThat(three.text()).startsWith("Which tree do you mean? 1: the nearest one, 15 m to the east (T2); "
                 + "2: the second nearest, 20 m to the north (T1); 3: the third nearest, 40 m to the west (T3).");

@@ -43,7 +43,12 @@ class GoalJsonReadTest {
         "{\"goal\":\"head\",\"direction\":\"up\"} | goal.direction must be a compass direction",
         "{\"goal\":\"ask\",\"topic\":\"meaning\"} | goal.topic must be one of see, where",
         "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"place\",\"place\":{\"relation\":\"inside\"}}}"
-                + " | goal.destination.place.relation must be one of on, in"
+                + " | goal.destination.place.relation must be one of on, in",
+        "{\"goal\":\"leave\",\"what\":{\"kind\":\"tree\"}} | only fruit can be left alone",
+        "{\"goal\":\"when-see\",\"what\":{\"kind\":\"banana\"},\"then\":{\"goal\":\"lift\"}}"
+                + " | must be an action, not lift",
+        "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"tree\",\"ordinal\":2}} | the distance is missing",
+        "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"castle\",\"id\":\"C1\"}} | an id names one fruit"
     })
     void badJsonIsRefusedNamingTheValueAndWhatWasExpected(String line) {
         String[] parts = line.split(" \\| ");

@@ -78,7 +78,36 @@ class GoalJsonTest {
                 new RelativeMove(RelativeMove.Direction.BACKWARD), new ComeBack(), Collect.one(Reference.to(Kind.COCONUT)),
                 Turn.around(), new Face(Sector.WEST), new LookAt(castle), new LookFor(Reference.to(Kind.BANANA)),
                 new Explore(Reference.to(Kind.FOREST)), Follow.agent("Dwarf"), new Stop(), new Wait(2.5),
-                new CarryOn(), Sequence.of(new Stop(), new CarryOn()));
+                new CarryOn(), Sequence.of(new Stop(), new CarryOn()),
+                new Avoid(Reference.place(Place.of(Relation.NEAR, Reference.to(Kind.RIVER)))),
+                new Leave(Reference.to(Kind.COCONUT)), new Only(Reference.to(Kind.BANANA)), Lift.all(),
+                new Lift(Reference.to(Kind.TOMATO)), new WhenSee(Reference.to(Kind.BANANA),
+                        Collect.one(Reference.to(Kind.BANANA))), Ask.of(Ask.Topic.RULES),
+                new GoTo(Reference.to(Kind.TABLE).withOrdinal(2, Distance.LEFTMOST)),
+                new GoTo(Reference.thing(Kind.TABLE, "D3")));
+    }
+
+    @Test
+    void rulesConditionsOrdinalsAndIdsAreWrittenAndReadBack() {
+        Goal when = new WhenSee(Reference.agent("Roadrunner"), new Follow(Reference.agent("Roadrunner")));
+        Goal second = new GoTo(Reference.to(Kind.TABLE).withOrdinal(2, Distance.LEFTMOST));
+        Goal that = Collect.all(Reference.to(Kind.TOMATO).withPlace(Place.of(Relation.ON,
+                Reference.thing(Kind.TABLE, "D3"))));
+
+        assertThat(GoalJson.write(new Avoid(Reference.to(Kind.FOREST))))
+                .isEqualTo("{\"goal\":\"avoid\",\"area\":{\"kind\":\"forest\"}}");
+        assertThat(GoalJson.write(Lift.all())).isEqualTo("{\"goal\":\"lift\"}");
+        assertThat(GoalJson.write(when)).isEqualTo("{\"goal\":\"when-see\",\"what\":{\"kind\":\"agent\","
+                + "\"name\":\"Roadrunner\"},\"then\":{\"goal\":\"follow\",\"agent\":{\"kind\":\"agent\","
+                + "\"name\":\"Roadrunner\"}}}");
+        assertThat(GoalJson.write(second)).isEqualTo("{\"goal\":\"go-to\",\"destination\":{\"kind\":\"table\","
+                + "\"distance\":\"leftmost\",\"ordinal\":2}}");
+        assertThat(GoalJson.write(that)).isEqualTo("{\"goal\":\"collect\",\"what\":{\"kind\":\"tomato\","
+                + "\"place\":{\"relation\":\"on\",\"anchor\":{\"kind\":\"table\",\"id\":\"D3\"}}},"
+                + "\"count\":\"all\"}");
+        for (Goal goal : everyKindOfGoal()) {
+            assertThat(GoalJson.read(GoalJson.write(goal))).isEqualTo(goal);
+        }
     }
 
     @ParameterizedTest(name = "{0}")

@@ -51,7 +51,15 @@ class GoalSchemaTest {
                 goals++;
             }
         }
-        assertThat(goals).as("goals checked").isGreaterThan(300);
+        InstructionInterpreter german = new InstructionInterpreter(java.util.List.of(), Language.GERMAN);
+        for (String sentence : InstructionSets.german()) {
+            if (german.interpret(sentence) instanceof Interpretation.Understood understood) {
+                String json = GoalJson.write(understood.goal());
+                assertThat(schema.validate(json, InputFormat.JSON)).as("\"%s\" as %s", sentence, json).isEmpty();
+                goals++;
+            }
+        }
+        assertThat(goals).as("goals checked").isGreaterThan(400);
     }
 
     @ParameterizedTest
@@ -67,7 +75,10 @@ class GoalSchemaTest {
         "{\"goal\":\"head\",\"direction\":\"up\"}",
         "{\"goal\":\"move\",\"direction\":\"forward\",\"distance\":0}",
         "{\"goal\":\"ask\",\"topic\":\"the-weather\"}",
-        "{\"goal\":\"wait\",\"seconds\":-1}"})
+        "{\"goal\":\"wait\",\"seconds\":-1}",
+        "{\"goal\":\"leave\",\"what\":{\"kind\":\"tree\"}}",
+        "{\"goal\":\"when-see\",\"what\":{\"kind\":\"banana\"},\"then\":{\"goal\":\"lift\"}}",
+        "{\"goal\":\"go-to\",\"destination\":{\"kind\":\"tree\",\"ordinal\":2}}"})
     void whatGoalJsonRefusesTheSchemaRefusesToo(String json) {
         assertThatThrownBy(() -> GoalJson.read(json)).isInstanceOf(IllegalArgumentException.class);
         assertThat(schema.validate(json, InputFormat.JSON)).as(json).isNotEmpty();

@@ -325,7 +325,12 @@ class InstructionInterpreterTest {
             "pick up the castle | only pick up fruit",
             "follow the river | only follow other agents",
             "go to two trees | only one place at a time",
-            "don't go to the castle | rather than what not to do"
+            "don't follow Guppy | rather than what not to do",
+            "when you stop, turn left | I can act when I see something",
+            "from now on explore the forest | I can keep from now on only rules",
+            "you can follow Guppy again | I can lift a rule",
+            "collect all the tomatoes on that table | which one you mean by 'that table'",
+            "go to the second biggest tree | count things by how near"
         })
         void incompleteOrImpossibleInstructionsGetAQuestionOrAReason(String sentence, String answer) {
             NotUnderstood refusal = refused(sentence);

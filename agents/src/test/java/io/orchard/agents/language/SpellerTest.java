@@ -2,6 +2,7 @@ package io.orchard.agents.language;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Nested;
@@ -40,7 +41,7 @@ class SpellerTest {
     @Nested
     class WithTheVocabulary {
 
-        private final Lexicon lexicon = Lexicon.withAgents(List.of());
+        private final Lexicon lexicon = Lexicon.withAgents(List.of(), Language.ENGLISH);
 
         @ParameterizedTest(name = "{0} -> {1}")
         @CsvSource({
@@ -106,6 +107,67 @@ class SpellerTest {
             Speller speller = new Speller(Map.of("tree", "NOUN:tree", "three", "NUMBER:3"));
             assertThat(speller.correct("tree")).isNull();
             assertThat(speller.correct("three")).isNull();
+        }
+    }
+
+    @Nested
+    class AcrossLanguages {
+
+        private final Lexicon english = Lexicon.withAgents(List.of(), Language.ENGLISH);
+        private final Lexicon german = Lexicon.withAgents(List.of(), Language.GERMAN);
+
+        /** What the lexicon makes of one word: the word it was corrected into, or null when it was not corrected. */
+        private String correction(Lexicon lexicon, String word) {
+            List<Lexeme> read = lexicon.read(Tokenizer.tokens(word, lexicon.language()));
+            return read.stream().filter(lexeme -> lexeme.corrected() != null).map(Lexeme::lemma).findFirst()
+                    .orElse(null);
+        }
+
+        @Test
+        void noGermanWordIsCorrectedIntoAnEnglishOne() {
+            List<String> corrected = new ArrayList<>();
+            GermanWords words = new GermanWords().build();
+            for (String word : words.words().keySet()) {
+                String into = correction(english, word);
+                if (into != null) {
+                    corrected.add(word + " -> " + into);
+                }
+            }
+            assertThat(words.words()).hasSizeGreaterThan(400);
+            assertThat(corrected).as("German words the English speller corrected").isEmpty();
+        }
+
+        @Test
+        void noEnglishWordIsCorrectedIntoAGermanOne() {
+            List<String> corrected = new ArrayList<>();
+            for (String sentence : List.of("go to the castle and pick up the nearest banana on the table",
+                    "walk north, then turn left and follow Guppy", "take three tomatoes from the ground",
+                    "explore the forest until you find a coconut", "stop", "wait here for ten seconds",
+                    "leave the coconuts alone", "the tree on your left", "this these that those then there")) {
+                for (String word : sentence.split("[ ,]+")) {
+                    String into = correction(german, word);
+                    if (into != null) {
+                        corrected.add(word + " -> " + into);
+                    }
+                }
+            }
+            assertThat(corrected).as("English words the German speller corrected").isEmpty();
+        }
+
+        @ParameterizedTest(name = "\"{0}\" is {1} in German, and not corrected in English")
+        @CsvSource({"bananen, banana", "tisch, table", "baume, tree", "nimm, take", "brucke, bridge",
+            "kokosnusse, coconut", "wald, forest"})
+        void germanWordsAreKnownInGermanAndLeftAloneInEnglish(String word, String lemma) {
+            Lexeme read = german.read(Tokenizer.tokens(word, Language.GERMAN)).get(0);
+            assertThat(read.lemma()).isEqualTo(lemma);
+            assertThat(correction(english, word)).isNull();
+        }
+
+        @Test
+        void eachLanguageStillCorrectsItsOwnTypos() {
+            assertThat(correction(english, "bananna")).isEqualTo("banana");
+            assertThat(correction(german, "banahne")).isEqualTo("banana");
+            assertThat(correction(german, "schlos")).isEqualTo("castle");
         }
     }
 }

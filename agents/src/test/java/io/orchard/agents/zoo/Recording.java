@@ -42,7 +42,7 @@ import java.util.Map;
  * @param seen      the simulated time of the tick in which the agent first perceived each fruit it did, by id
  * @param refusals  the agent's moves the server rejected, in order
  */
-record Recording(WorldSnapshotMessage world, Body body, List<Tick> ticks, Map<String, Double> removed,
+public record Recording(WorldSnapshotMessage world, Body body, List<Tick> ticks, Map<String, Double> removed,
                  Map<String, Double> seen, List<Refusal> refusals) {
 
     /**
@@ -54,7 +54,7 @@ record Recording(WorldSnapshotMessage world, Body body, List<Tick> ticks, Map<St
      * @param heading which way it faced, NaN when it perceived nothing in the tick
      * @param grasped whether the agent took a fruit in the tick before
      */
-    record Tick(long tick, double time, Point2 at, double heading, boolean grasped) {}
+    public record Tick(long tick, double time, Point2 at, double heading, boolean grasped) {}
 
     /** The recorded world as the server models it, to ask the server's own geometry about it. */
     World model() {
@@ -79,13 +79,13 @@ record Recording(WorldSnapshotMessage world, Body body, List<Tick> ticks, Map<St
      * @param time   the simulated time of the tick it was answered in
      * @param reason the server's reason: "path enters the castle"
      */
-    record Refusal(double time, String reason) {}
+    public record Refusal(double time, String reason) {}
 
     private static final String[] WANTED = {"WorldSnapshot", "AgentAdded", "AgentMoved", "FruitRemoved",
         "ActionResult", "Tick", "Perception"};
 
     /** Reads the recording for the agent called {@code agent}. */
-    static Recording read(Path file, String agent) throws IOException {
+    public static Recording read(Path file, String agent) throws IOException {
         MessageCodec codec = new MessageCodec();
         WorldSnapshotMessage world = null;
         Body body = null;

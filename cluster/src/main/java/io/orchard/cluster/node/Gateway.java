@@ -5,6 +5,7 @@ import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.value.Bounds;
+import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.GamePhase;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.Version;
@@ -44,6 +45,8 @@ public final class Gateway implements Inbox {
     private volatile GamePhase phase = GamePhase.WAITING;
     /** The epoch of the tick last heard; -1 before any. */
     private volatile long epoch = -1;
+    /** Ticks of the lockstep game heard so far, every epoch together: written by the gateway's actor alone. */
+    private volatile long lockstepTicks;
 
     /**
      * The gateway of node number {@code node} (a number no other node of the cluster has), for a
@@ -81,6 +84,10 @@ public final class Gateway implements Inbox {
                 })
                 .onMessage(GatewayCommand.Clock.class, clock -> {
                     if (clock.epoch() >= gateway.epoch) {
+                        if (clock.epoch() == gateway.epoch && clock.tick() > gateway.clockTick
+                                && gateway.config.clock() == ClockMode.LOCKSTEP) {
+                            gateway.lockstepTicks = gateway.lockstepTicks + clock.tick() - gateway.clockTick;
+                        }
                         gateway.epoch = clock.epoch();
                         gateway.clockTick = clock.tick();
                         gateway.phase = GamePhase.valueOf(clock.phase());
@@ -142,6 +149,15 @@ public final class Gateway implements Inbox {
     public void disconnected(ClientSession session, String reason) {
         sessions.remove(number(session));
         tick.tell(new TickCommand.Disconnected(number(session), reason));
+    }
+
+    /**
+     * The ticks of the lockstep game played so far, as the tick told this node: a client may send
+     * more lines the more ticks pass, as to one server.
+     */
+    @Override
+    public long lockstepTicks() {
+        return lockstepTicks;
     }
 
     @Override

@@ -58,8 +58,9 @@ final class RemoteSession implements ClientSession {
     @Override
     public void send(EncodedLine line) {
         if (open) {
-            // The line as encoded, without its newline.
-            lines.add(new String(line.bytes(), 0, line.bytes().length - 1, StandardCharsets.UTF_8));
+            // The line as encoded, once for every client, without its newline.
+            byte[] bytes = line.bytes(CODEC::encodeLine);
+            lines.add(new String(bytes, 0, bytes.length - 1, StandardCharsets.UTF_8));
         }
     }
 

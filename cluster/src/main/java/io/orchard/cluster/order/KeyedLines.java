@@ -11,6 +11,7 @@ import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.server.sim.MissedTurn;
 import io.orchard.server.sim.Recorder;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -32,8 +33,11 @@ public final class KeyedLines implements Recorder {
     private BiFunction<Message, MissedTurn, LineKey> place = (message, missed) -> {
         throw new IllegalStateException("a line was said with no place given for it: " + message);
     };
-    /** Whether the last line said went to one client, whose session reports its delivery next. */
-    private boolean awaitingDelivery;
+    /**
+     * The lines said last that went to one client each, in order, whose sessions report their
+     * deliveries next: one for a message, three for a perception (all recorded before any is sent).
+     */
+    private final ArrayDeque<Integer> undelivered = new ArrayDeque<>();
 
     /** What is said from now on belongs to one cause, in the order said. */
     public void cause(LineKey key) {
@@ -66,7 +70,9 @@ public final class KeyedLines implements Recorder {
     @Override
     public void sent(long tick, double time, Audience to, String client, Message message) {
         add(tick, time, to, client, message, null);
-        awaitingDelivery = to == Audience.CLIENT;
+        if (to == Audience.CLIENT) {
+            undelivered.add(lines.size() - 1);
+        }
     }
 
     @Override
@@ -75,7 +81,9 @@ public final class KeyedLines implements Recorder {
     }
 
     private void add(long tick, double time, Audience to, String client, Message message, MissedTurn missed) {
-        awaitingDelivery = false;
+        if (to != Audience.CLIENT) {
+            undelivered.clear(); // a line to no one client: the ones before it were sent, or never will be
+        }
         lines.add(new KeyedLine(next(message, missed), tick, time, to, client, message, missed, null, null));
     }
 
@@ -86,15 +94,14 @@ public final class KeyedLines implements Recorder {
     }
 
     /**
-     * {@code message} goes to {@code session}: what a part's session reports. It is the last line
-     * said, when that went to one client; else a message the recording does not hold (the game is
-     * over, and no longer recorded), delivered in its place all the same.
+     * {@code message} goes to {@code session}: what a part's session reports. It is the first line
+     * said last to one client and not yet delivered; else a message the recording does not hold (the
+     * game is over, and no longer recorded), delivered in its place all the same.
      */
     void delivered(SessionRef session, ServerMessage message) {
-        if (awaitingDelivery) {
-            int last = lines.size() - 1;
-            lines.set(last, lines.get(last).deliveredTo(session, message));
-            awaitingDelivery = false;
+        Integer line = undelivered.poll();
+        if (line != null) {
+            lines.set(line, lines.get(line).deliveredTo(session, message));
         } else {
             caughtUp(session, message);
         }
@@ -115,7 +122,7 @@ public final class KeyedLines implements Recorder {
         List<KeyedLine> taken = new ArrayList<>(lines);
         lines.clear();
         said.clear();
-        awaitingDelivery = false;
+        undelivered.clear();
         return taken;
     }
 

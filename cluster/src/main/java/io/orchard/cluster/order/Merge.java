@@ -1,6 +1,5 @@
 package io.orchard.cluster.order;
 
-import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
@@ -21,8 +20,6 @@ import java.util.TreeMap;
  * ({@link KeyedLine#joining}) on; messages to it alone from when it connected.
  */
 public final class Merge {
-
-    private static final MessageCodec CODEC = new MessageCodec();
 
     /** Every client connected, by number. */
     private final Map<Long, ClientSession> connected = new TreeMap<>();
@@ -75,7 +72,7 @@ public final class Merge {
                     default -> all;
                 };
                 if (!to.isEmpty()) {
-                    EncodedLine encoded = EncodedLine.of(CODEC, (ServerMessage) line.message());
+                    EncodedLine encoded = new EncodedLine((ServerMessage) line.message());
                     to.values().forEach(session -> session.send(encoded));
                 }
             }

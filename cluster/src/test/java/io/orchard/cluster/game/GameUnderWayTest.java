@@ -34,9 +34,9 @@ import org.junit.jupiter.api.io.TempDir;
  * whose world is cut into parcels of 25 units, by the same script: an agent that registers after the
  * start, a viewer that connects late, an agent whose connection drops, a stranger refused its name,
  * its controller back with its resume token, an agent that unregisters, instructions, refused
- * messages, a pause with a registration and a viewer during it, turns missed, and the end. Both
- * games record the same file, byte for byte, and every client hears the same messages in the same
- * order, the late viewers' catching up included.
+ * messages, a restart refused, a pause with a registration and a viewer during it, turns missed,
+ * and the end. Both games record the same file, byte for byte, and every client hears the same
+ * messages in the same order, the late viewers' catching up included.
  */
 class GameUnderWayTest {
 
@@ -79,7 +79,7 @@ class GameUnderWayTest {
                 .contains("\"agent\":\"Late\",", "\"reason\":\"connection closed\"", "\"code\":\"name_in_use\"",
                         "\"reason\":\"unregistered\"", "\"turn\":\"deadline\"", "\"turn\":\"late\"",
                         "\"type\":\"Instruction\"", "\"code\":\"unknown_agent\"", "\"code\":\"wrong_role\"",
-                        "\"code\":\"not_your_agent\"", "the game has already started", "the game is not running",
+                        "\"code\":\"not_your_agent\"", "the game has already started", "the game is not running", "this server plays one game only",
                         "\"type\":\"ScoreUpdate\"", "\"type\":\"GameOver\"", "\"agent\":\"Extra\",");
         List<ServerMessage> lateViewer = onParcels.heard().get("viewer");
         assertThat(lateViewer.get(0)).as("the late viewer's first message").isInstanceOf(WorldSnapshotMessage.class);
@@ -165,6 +165,7 @@ class GameUnderWayTest {
         private void during(long tick, Games.Game game) {
             if (tick == 5) {
                 game.received(first, new GameControlMessage(++seq, GameCommand.START));
+                game.received(first, new GameControlMessage(++seq, GameCommand.RESTART, null));
             } else if (tick == 10) {
                 game.connected(late);
                 lateComer.register().forEach(m -> game.received(late, m));

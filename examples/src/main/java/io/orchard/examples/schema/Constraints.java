@@ -1,8 +1,10 @@
 package io.orchard.examples.schema;
 
+import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.value.Bounds;
 import io.orchard.protocol.value.BridgeShape;
 import io.orchard.protocol.value.Checks;
+import io.orchard.protocol.value.GameCommand;
 import io.orchard.protocol.value.Gripper;
 import io.orchard.protocol.value.LeanUnits;
 import io.orchard.protocol.value.ModelFormat;
@@ -89,6 +91,8 @@ final class Constraints {
             definition.set("not", notTheZeroAxis());
         } else if (record == ModelSpec.class) {
             eitherBundledOrData(definition);
+        } else if (record == GameControlMessage.class) {
+            seedOnlyWithRestart(definition);
         }
         String between = BETWEEN_FIELDS.get(record);
         if (between != null) {
@@ -150,7 +154,8 @@ final class Constraints {
         if (record == ModelSpec.class && name.equals("data")) {
             property.put("maxLength", (ModelSpec.MAX_MODEL_BYTES + 2) / 3 * 4).put("pattern", BASE64_PATTERN)
                     .put("description", "The model file in Base64, at most " + ModelSpec.MAX_MODEL_BYTES
-                            + " bytes once decoded.");
+                            + " bytes once decoded; with format zip, a zip whose files also unpack to at most that"
+                            + " and that the server checks further (docs/protocol.md, 6.2).");
         } else if (PART_NAMES.contains(name)) {
             property.put("pattern", PART_NAME_PATTERN);
         } else if (NAMES.contains(name)) {
@@ -228,6 +233,13 @@ final class Constraints {
         ObjectNode elseProperties = otherwise.putObject("properties");
         elseProperties.putObject("bundled").put("type", "null");
         elseProperties.putObject("data").put("type", "string");
+    }
+
+    /** A seed goes with the command restart alone: with another command, it is absent or null. */
+    private static void seedOnlyWithRestart(ObjectNode definition) {
+        definition.putObject("if").putObject("properties").putObject("command").putObject("not").put("const",
+                GameCommand.RESTART.wireName());
+        definition.putObject("then").putObject("properties").putObject("seed").put("type", "null");
     }
 
     private static IllegalStateException unknown(Class<?> record, String name) {

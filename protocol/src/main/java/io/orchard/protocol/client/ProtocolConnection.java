@@ -172,7 +172,15 @@ public final class ProtocolConnection implements AutoCloseable {
             open(socket, host, port);
             ProtocolConnection connection = new ProtocolConnection(socket, codec, listener);
             connection.readerThread.start();
-            connection.writeNow(hello);
+            try {
+                connection.writeNow(hello);
+            } catch (IOException writeFailed) {
+                // A server that refuses at once (full, say) may close before reading the hello, and
+                // the reader may have taken its refusal and closed the socket under the write:
+                // the refusal, not the failed write, is the reason.
+                connection.throwRefusal();
+                throw writeFailed;
+            }
             connection.awaitWelcome();
             return connection;
         } catch (IOException | RuntimeException e) {
@@ -269,6 +277,17 @@ public final class ProtocolConnection implements AutoCloseable {
         synchronized (out) {
             out.write(line);
             out.flush();
+        }
+    }
+
+    /** Throws the server's refusal of the handshake, if it sent one before the connection ended. */
+    private void throwRefusal() throws IOException {
+        try {
+            awaitWelcome();
+        } catch (IOException ended) {
+            if (ended.getCause() instanceof HandshakeRefusedException) {
+                throw ended;
+            }
         }
     }
 

@@ -19,12 +19,23 @@ public enum ModelFormat {
     VRML97("vrml97"),
 
     /** One of the models the viewer ships, named instead of sent. */
-    BUNDLED("bundled");
+    BUNDLED("bundled"),
+
+    /**
+     * A zip of one model file and the files it refers to (version 2): a glTF with its buffers and
+     * textures beside it, an X3D with its textures and {@code Inline} files; see {@link ModelArchive}.
+     */
+    ZIP("zip");
 
     private final String wireName;
 
     ModelFormat(String wireName) {
         this.wireName = wireName;
+    }
+
+    /** Whether a client of protocol version 1 knows this format. */
+    public boolean inVersion1() {
+        return this != ZIP;
     }
 
     /** The name of this value on the wire. */

@@ -12,9 +12,13 @@ import java.util.List;
  * @param bundled the name of a bundled model, only with {@link ModelFormat#BUNDLED}: one of
  *                {@link #BUNDLED_NAMES}, which the server checks when an agent registers
  * @param data    the model file, Base64-encoded (standard alphabet, with padding); at most
- *                {@link #MAX_MODEL_BYTES} once decoded
+ *                {@link #MAX_MODEL_BYTES} once decoded; with {@link ModelFormat#ZIP} a zip whose
+ *                files also unpack to at most that ({@link ModelArchive}, which the server checks
+ *                when an agent registers)
+ * @param fit     how viewers size and place the model (version 2); absent means
+ *                {@link ModelFit#BODY}
  */
-public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable String data) {
+public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable String data, @Nullable ModelFit fit) {
 
     /**
      * The models a viewer ships, by the name a {@code bundled} spec gives: an agent that names one
@@ -70,6 +74,32 @@ public record ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable 
             }
         }
         return "its " + data.length() + " characters do not make whole groups of 4 (with padding)";
+    }
+
+    /** A spec fitted to the body, as every version 1 spec is. */
+    public ModelSpec(ModelFormat format, @Nullable String bundled, @Nullable String data) {
+        this(format, bundled, data, null);
+    }
+
+    /** This spec with another {@code fit}; {@link ModelFit#BODY} is written as absent. */
+    public ModelSpec withFit(ModelFit value) {
+        return new ModelSpec(format, bundled, data, value == ModelFit.BODY ? null : value);
+    }
+
+    /** How viewers size and place the model: {@code fit}, or {@link ModelFit#BODY} when absent. */
+    public ModelFit fitOrDefault() {
+        return fit == null ? ModelFit.BODY : fit;
+    }
+
+    /**
+     * This spec as a client of protocol version 1 is sent it: without {@code fit}, and nothing (the
+     * agent shows as a placeholder) for a format version 1 does not know.
+     */
+    public @Nullable ModelSpec forVersion1() {
+        if (!format.inVersion1()) {
+            return null;
+        }
+        return fit == null ? this : new ModelSpec(format, bundled, data);
     }
 
     /** A model given by its bytes. */

@@ -210,6 +210,38 @@ class ProtocolConnectionTest {
                 hello -> assertThat(hello.operatorToken()).isEqualTo("op-1"));
     }
 
+    /**
+     * A full server refuses at once and closes, before it reads the hello: the client's reader may
+     * have taken the refusal and closed the socket before the hello is written. The refusal is the
+     * reason, not the failed write ("Socket closed"), whichever thread gets there first.
+     */
+    @Test
+    void aRefusalSentBeforeTheHelloIsReadIsTheReasonWhicheverThreadIsFirst() throws Exception {
+        server = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
+        byte[] refusal = codec.encodeLine(new ErrorMessage(0, ErrorCode.TOO_MANY_AGENTS,
+                "the server takes at most 1 connections; try again later"));
+        Thread refuser = new Thread(() -> {
+            while (!server.isClosed()) {
+                try (Socket socket = server.accept()) {
+                    socket.getOutputStream().write(refusal);
+                } catch (IOException closed) {
+                    return;
+                }
+            }
+        });
+        refuser.setDaemon(true);
+        refuser.start();
+        int port = server.getLocalPort();
+
+        for (int attempt = 0; attempt < 200; attempt++) {
+            int number = attempt;
+            assertThatThrownBy(() -> ProtocolConnection.connect("127.0.0.1", port, Role.VIEWER, "test", m -> { }))
+                    .as("attempt %d", number)
+                    .hasMessageContaining("too_many_agents: the server takes at most 1 connections")
+                    .cause().isInstanceOf(HandshakeRefusedException.class);
+        }
+    }
+
     @Test
     void connectingWhereNoServerListensNamesTheHostAndPortAndSaysSo() throws IOException {
         int port;

@@ -2,11 +2,9 @@ package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
 import io.netty.buffer.Unpooled;
-import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.MoveMessage;
-import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.PerceptionRequestMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -19,6 +17,7 @@ import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.BodyLimits;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.EncodedLine;
+import io.orchard.server.sim.Percept;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
@@ -44,15 +43,13 @@ import org.openjdk.jmh.annotations.State;
  * {@code Tick} and its perception, in the ordinary form (six lines) or the lean one (three, or two
  * without the accepted move's result), each client's lines into one buffer. The messages are those
  * of a real tick of the benchmark world (1,000 × 1,000 units, 10,000 objects; sight 50, 120°).
- * {@link #viewerBroadcasts} is the share of the simulation's thread: the tick's {@code AgentMoved}
- * for viewers, encoded once for all of them.
+ * {@link #viewerBroadcasts} is the tick's {@code AgentMoved} for viewers, each encoded once for all
+ * of them (by the first network thread that writes it).
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.MILLISECONDS)
 public class TickOutputBenchmark {
-
-    private static final MessageCodec CODEC = new MessageCodec();
 
     @Param({"1000"})
     int agents;
@@ -89,6 +86,11 @@ public class TickOutputBenchmark {
         @Override
         public void send(ServerMessage message) {
             sent.add(message);
+        }
+
+        @Override
+        public void send(Percept percept) {
+            sent.add(percept);
         }
 
         @Override
@@ -138,8 +140,8 @@ public class TickOutputBenchmark {
             sim.beginTick();
             for (int i = 0; i < agents; i++) {
                 Capture client = clients.get(i);
-                PerceptionMessage seen = (PerceptionMessage) client.sent.stream()
-                        .filter(PerceptionMessage.class::isInstance).findFirst().orElseThrow();
+                Percept seen = (Percept) client.sent.stream().filter(Percept.class::isInstance).findFirst()
+                        .orElseThrow();
                 Vec3 here = seen.position();
                 sim.received(client, new MoveMessage(++seq, "A" + i, here, Vec3.ground(
                         here.x() + random.nextDouble(-2, 2), here.z() + random.nextDouble(-2, 2))));
@@ -154,7 +156,7 @@ public class TickOutputBenchmark {
         for (Capture client : clients) {
             List<Object> batch = new ArrayList<>();
             for (Object message : client.sent) {
-                if (message instanceof EncodedLine || forms.sends((ServerMessage) message)) {
+                if (!(message instanceof ServerMessage plain) || forms.sends(plain)) {
                     batch.add(message);
                 }
             }
@@ -185,7 +187,7 @@ public class TickOutputBenchmark {
     public long viewerBroadcasts() {
         long bytes = 0;
         for (ServerMessage message : broadcasts) {
-            bytes += EncodedLine.of(CODEC, message).bytes().length;
+            bytes += new EncodedLine(message).bytes(TickLines::encode).length;
         }
         return bytes;
     }

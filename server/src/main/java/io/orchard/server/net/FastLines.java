@@ -2,6 +2,7 @@ package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.PerceptionMessage;
@@ -14,26 +15,33 @@ import io.orchard.protocol.value.PerceivedObject;
 import io.orchard.protocol.value.PerceivedRiver;
 import io.orchard.protocol.value.RelativePosition;
 import io.orchard.protocol.value.Vec3;
-import java.nio.charset.StandardCharsets;
 import java.util.List;
 import tools.jackson.core.io.NumberOutput;
-import tools.jackson.databind.json.JsonMapper;
 
 /**
- * Writes the lines that make most of the traffic (perceptions, action results, ticks) straight
- * into a buffer, byte for byte as {@code MessageCodec} writes them. Perceptions carry numbers
- * rounded to thousandths, which are written as fixed-point digits instead of by the general
- * shortest-decimal algorithm: that, and skipping the mapper's reflection, cuts the cost of a
- * perception several times. Any other number or string goes the general way. Stateless.
+ * Writes the lines that make most of the traffic (perceptions, action results, ticks, moves for
+ * viewers) straight into an array of lines ({@link LineBytes}), byte for byte as
+ * {@code MessageCodec} writes them. Perceptions carry numbers rounded to thousandths, which are
+ * written as fixed-point digits instead of by the general shortest-decimal algorithm: that, and
+ * skipping the mapper's reflection, cuts the cost of a perception several times. Any other number
+ * or string goes the general way. Stateless.
  */
 final class FastLines {
 
-    private static final JsonMapper STRINGS = JsonMapper.builder().build();
-
     private FastLines() {}
 
-    /** Writes the message's line, newline included, and says whether it could; if not, wrote nothing. */
+    /** Writes the message's line into a buffer, as {@link #write(ServerMessage, LineBytes)}. */
     static boolean write(ServerMessage message, ByteBuf out) {
+        LineBytes line = new LineBytes(256);
+        if (!write(message, line)) {
+            return false;
+        }
+        line.writeTo(out);
+        return true;
+    }
+
+    /** Writes the message's line, newline included, and says whether it could; if not, wrote nothing. */
+    static boolean write(ServerMessage message, LineBytes out) {
         if (message instanceof PerceptionMessage m) {
             perception(m, out);
         } else if (message instanceof ActionResultMessage m) {
@@ -46,6 +54,15 @@ final class FastLines {
             text(field(out, ",\"agent\""), m.agent());
             text(field(out, ",\"sector\""), m.sector().wireName());
             end(out);
+        } else if (message instanceof AgentMovedMessage m) {
+            head(out, "AgentMoved");
+            integer(field(out, "tick"), m.tick());
+            text(field(out, ",\"agent\""), m.agent());
+            vec3(field(out, ",\"from\""), m.from());
+            vec3(field(out, ",\"to\""), m.to());
+            number(field(out, ",\"startTime\""), m.startTime());
+            number(field(out, ",\"duration\""), m.duration());
+            end(out);
         } else if (message instanceof TickMessage m) {
             head(out, "Tick");
             integer(field(out, "tick"), m.tick());
@@ -57,40 +74,40 @@ final class FastLines {
         return true;
     }
 
-    private static void perception(PerceptionMessage m, ByteBuf out) {
+    private static void perception(PerceptionMessage m, LineBytes out) {
         head(out, "Perception");
         integer(field(out, "tick"), m.tick());
         text(field(out, ",\"agent\""), m.agent());
         vec3(field(out, ",\"position\""), m.position());
         number(field(out, ",\"heading\""), m.heading());
-        ascii(out, ",\"objects\":[");
+        out.ascii(",\"objects\":[");
         List<PerceivedObject> objects = m.objects();
         for (int i = 0; i < objects.size(); i++) {
             PerceivedObject o = objects.get(i);
-            ascii(out, i == 0 ? "{\"id\":" : ",{\"id\":");
+            out.ascii(i == 0 ? "{\"id\":" : ",{\"id\":");
             text(out, o.id());
             text(field(out, ",\"kind\""), o.kind().wireName());
             relative(field(out, ",\"at\""), o.at());
             number(field(out, ",\"radius\""), o.radius());
             number(field(out, ",\"height\""), o.height());
-            out.writeByte('}');
+            out.put('}');
         }
-        ascii(out, "],\"agents\":[");
+        out.ascii("],\"agents\":[");
         List<PerceivedAgent> agents = m.agents();
         for (int i = 0; i < agents.size(); i++) {
             PerceivedAgent a = agents.get(i);
-            ascii(out, i == 0 ? "{\"name\":" : ",{\"name\":");
+            out.ascii(i == 0 ? "{\"name\":" : ",{\"name\":");
             text(out, a.name());
             relative(field(out, ",\"at\""), a.at());
             number(field(out, ",\"heading\""), a.heading());
             number(field(out, ",\"radius\""), a.radius());
-            out.writeByte('}');
+            out.put('}');
         }
-        ascii(out, "],\"fruit\":[");
+        out.ascii("],\"fruit\":[");
         List<PerceivedFruit> fruit = m.fruit();
         for (int i = 0; i < fruit.size(); i++) {
             PerceivedFruit f = fruit.get(i);
-            ascii(out, i == 0 ? "{\"id\":" : ",{\"id\":");
+            out.ascii(i == 0 ? "{\"id\":" : ",{\"id\":");
             text(out, f.id());
             text(field(out, ",\"kind\""), f.kind().wireName());
             vec3(field(out, ",\"position\""), f.position());
@@ -98,13 +115,13 @@ final class FastLines {
             if (f.support() != null) {
                 text(field(out, ",\"support\""), f.support());
             }
-            out.writeByte('}');
+            out.put('}');
         }
-        out.writeByte(']');
+        out.put(']');
         end(out);
     }
 
-    private static void landmarks(LandmarkPerceptionMessage m, ByteBuf out) {
+    private static void landmarks(LandmarkPerceptionMessage m, LineBytes out) {
         head(out, "LandmarkPerception");
         integer(field(out, "tick"), m.tick());
         text(field(out, ",\"agent\""), m.agent());
@@ -112,24 +129,24 @@ final class FastLines {
         if (river != null) {
             relative(field(out, ",\"river\":{\"nearest\""), river.nearest());
             number(field(out, ",\"across\""), river.across());
-            out.writeByte('}');
+            out.put('}');
         }
-        ascii(out, ",\"bridges\":[");
+        out.ascii(",\"bridges\":[");
         List<PerceivedBridge> bridges = m.bridges();
         for (int i = 0; i < bridges.size(); i++) {
             PerceivedBridge b = bridges.get(i);
-            ascii(out, i == 0 ? "{\"id\":" : ",{\"id\":");
+            out.ascii(i == 0 ? "{\"id\":" : ",{\"id\":");
             text(out, b.id());
             relative(field(out, ",\"entryA\""), b.entryA());
             relative(field(out, ",\"entryB\""), b.entryB());
             number(field(out, ",\"width\""), b.width());
-            out.writeByte('}');
+            out.put('}');
         }
-        out.writeByte(']');
+        out.put(']');
         end(out);
     }
 
-    private static void actionResult(ActionResultMessage m, ByteBuf out) {
+    private static void actionResult(ActionResultMessage m, LineBytes out) {
         head(out, "ActionResult");
         integer(field(out, "seq"), m.seq());
         if (m.agent() != null) {
@@ -149,56 +166,50 @@ final class FastLines {
 
     // ---- pieces ----------------------------------------------------------------------------------
 
-    private static void head(ByteBuf out, String type) {
-        ascii(out, "{\"type\":\"");
-        ascii(out, type);
-        ascii(out, "\",");
+    private static void head(LineBytes out, String type) {
+        out.ascii("{\"type\":\"");
+        out.ascii(type);
+        out.ascii("\",");
     }
 
-    private static void end(ByteBuf out) {
-        out.writeByte('}').writeByte('\n');
+    private static void end(LineBytes out) {
+        out.put('}');
+        out.put('\n');
     }
 
     /** Writes a field's name and colon: {@code name} is either bare ("tick") or written out (",\"agent\""). */
-    private static ByteBuf field(ByteBuf out, String name) {
+    private static LineBytes field(LineBytes out, String name) {
         if (name.charAt(0) == ',') {
-            ascii(out, name);
+            out.ascii(name);
         } else {
-            out.writeByte('"');
-            ascii(out, name);
-            out.writeByte('"');
+            out.put('"');
+            out.ascii(name);
+            out.put('"');
         }
-        return out.writeByte(':');
+        out.put(':');
+        return out;
     }
 
-    static void integer(ByteBuf out, long value) {
-        if (value == Long.MIN_VALUE) {
-            ascii(out, Long.toString(value));
-            return;
-        }
-        if (value < 0) {
-            out.writeByte('-');
-            value = -value;
-        }
-        digits(value, out);
+    static void integer(LineBytes out, long value) {
+        out.integer(value);
     }
 
-    private static void vec3(ByteBuf out, Vec3 v) {
-        ascii(out, "{\"x\":");
+    private static void vec3(LineBytes out, Vec3 v) {
+        out.ascii("{\"x\":");
         number(out, v.x());
-        ascii(out, ",\"y\":");
+        out.ascii(",\"y\":");
         number(out, v.y());
-        ascii(out, ",\"z\":");
+        out.ascii(",\"z\":");
         number(out, v.z());
-        out.writeByte('}');
+        out.put('}');
     }
 
-    private static void relative(ByteBuf out, RelativePosition at) {
-        ascii(out, "{\"distance\":");
+    private static void relative(LineBytes out, RelativePosition at) {
+        out.ascii("{\"distance\":");
         number(out, at.distance());
-        ascii(out, ",\"bearing\":");
+        out.ascii(",\"bearing\":");
         number(out, at.bearing());
-        out.writeByte('}');
+        out.put('}');
     }
 
     /**
@@ -206,56 +217,36 @@ final class FastLines {
      * a decimal point). A number with at most three decimals below ten million is written from its
      * digits; anything else by Jackson's own algorithm.
      */
-    static void number(ByteBuf out, double value) {
+    static void number(LineBytes out, double value) {
         double magnitude = Math.abs(value);
         if (magnitude >= 1e-3 && magnitude < 1e7) {
             long thousandths = Math.round(magnitude * 1000);
             if (thousandths / 1000.0 == magnitude) {
                 if (value < 0) {
-                    out.writeByte('-');
+                    out.put('-');
                 }
-                digits(thousandths / 1000, out);
-                out.writeByte('.');
+                out.digits(thousandths / 1000);
+                out.put('.');
                 int fraction = (int) (thousandths % 1000);
                 if (fraction == 0) {
-                    out.writeByte('0');
+                    out.put('0');
                 } else {
-                    out.writeByte('0' + fraction / 100);
+                    out.put((char) ('0' + fraction / 100));
                     if (fraction % 100 != 0) {
-                        out.writeByte('0' + fraction / 10 % 10);
+                        out.put((char) ('0' + fraction / 10 % 10));
                         if (fraction % 10 != 0) {
-                            out.writeByte('0' + fraction % 10);
+                            out.put((char) ('0' + fraction % 10));
                         }
                     }
                 }
                 return;
             }
         }
-        ascii(out, NumberOutput.toString(value, true));
-    }
-
-    private static void digits(long value, ByteBuf out) {
-        if (value >= 10) {
-            digits(value / 10, out);
-        }
-        out.writeByte((int) ('0' + value % 10));
+        out.ascii(NumberOutput.toString(value, true));
     }
 
     /** A JSON string: plain printable ASCII is copied, anything else is escaped by Jackson. */
-    static void text(ByteBuf out, String text) {
-        for (int i = 0; i < text.length(); i++) {
-            char c = text.charAt(i);
-            if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
-                out.writeBytes(STRINGS.writeValueAsBytes(text));
-                return;
-            }
-        }
-        out.writeByte('"');
-        ascii(out, text);
-        out.writeByte('"');
-    }
-
-    private static void ascii(ByteBuf out, String text) {
-        out.writeCharSequence(text, StandardCharsets.US_ASCII);
+    static void text(LineBytes out, String text) {
+        out.text(text);
     }
 }

@@ -1,39 +1,40 @@
 package io.orchard.server.net;
 
 import io.netty.buffer.ByteBuf;
-import io.netty.buffer.Unpooled;
-import io.orchard.protocol.message.CastlePerceptionMessage;
-import io.orchard.protocol.message.LandmarkPerceptionMessage;
-import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.value.LeanUnits;
-import io.orchard.protocol.value.PerceivedAgent;
+import io.orchard.protocol.value.Obstacle;
 import io.orchard.protocol.value.PerceivedBridge;
 import io.orchard.protocol.value.PerceivedFruit;
-import io.orchard.protocol.value.PerceivedObject;
 import io.orchard.protocol.value.PerceivedRiver;
 import io.orchard.protocol.value.RelativePosition;
 import io.orchard.protocol.value.Vec3;
-import java.util.Arrays;
+import io.orchard.server.sim.Perceivables;
+import io.orchard.server.sim.Percept;
 import java.util.List;
 
 /**
- * Writes the three parts of a perception as one {@code LeanPerception} line straight into a
- * buffer, byte for byte as {@code MessageCodec} writes {@code LeanPerceptionMessage.of} them: every
- * number is a whole number of centimetres or milliradians, converted by {@link LeanUnits} as the
- * record does, so there is no decimal to format and no record to build. The line is built in an
- * array of the writing thread and handed to the buffer at once.
+ * Writes a perception as one {@code LeanPerception} line straight into a buffer, byte for byte as
+ * {@code MessageCodec} writes {@code LeanPerceptionMessage.of} its three messages: every number is
+ * a whole number of centimetres or milliradians, converted by {@link LeanUnits} as the record does,
+ * so there is no decimal to format and no record to build. What never changes about a tree, table
+ * or fruit (its id, kind and size; a fruit's place) is encoded once per world ({@link Tuples}) and
+ * copied, so a thing seen costs a copy and two numbers. The line is built in an array
+ * ({@link LineBytes}).
  */
 final class LeanLines {
 
-    private static final ThreadLocal<Line> LINE = ThreadLocal.withInitial(Line::new);
-
     private LeanLines() {}
 
+    /** Writes the perception's lean line into a buffer, as {@link #write(Percept, LineBytes)}. */
+    static void write(Percept seen, ByteBuf out) {
+        LineBytes line = new LineBytes(4096);
+        write(seen, line);
+        line.writeTo(out);
+    }
+
     /** Writes the perception's lean line, newline included. */
-    static void write(PerceptionMessage seen, LandmarkPerceptionMessage landmarks, CastlePerceptionMessage castle,
-                      ByteBuf out) {
-        Line line = LINE.get();
-        line.size = 0;
+    static void write(Percept seen, LineBytes line) {
+        Tuples tuples = seen.things().derived(Tuples.class, Tuples::new);
         line.ascii("{\"type\":\"LeanPerception\",\"tick\":");
         line.integer(seen.tick());
         line.ascii(",\"agent\":");
@@ -48,59 +49,37 @@ final class LeanLines {
         line.ascii("],\"heading\":");
         line.integer(LeanUnits.milliradians(seen.heading()));
         line.ascii(",\"objects\":[");
-        List<PerceivedObject> objects = seen.objects();
-        for (int i = 0; i < objects.size(); i++) {
-            PerceivedObject o = objects.get(i);
-            line.ascii(i == 0 ? "[" : ",[");
-            line.text(o.id());
-            line.put(',');
-            line.text(o.kind().wireName());
-            line.put(',');
-            relative(line, o.at());
-            line.put(',');
-            line.integer(LeanUnits.size(o.radius()));
-            line.put(',');
-            line.integer(LeanUnits.size(o.height()));
-            line.put(']');
+        for (int k = 0; k < seen.objectCount(); k++) {
+            if (k > 0) {
+                line.put(',');
+            }
+            int index = seen.objectIndex(k);
+            line.bytes(tuples.objects, tuples.objectStart[index], tuples.objectSplit[index]);
+            relative(line, seen.objectDistance(k), seen.objectBearing(k));
+            line.bytes(tuples.objects, tuples.objectSplit[index], tuples.objectStart[index + 1]);
         }
         line.ascii("],\"agents\":[");
-        List<PerceivedAgent> agents = seen.agents();
-        for (int i = 0; i < agents.size(); i++) {
-            PerceivedAgent a = agents.get(i);
-            line.ascii(i == 0 ? "[" : ",[");
-            line.text(a.name());
+        for (int k = 0; k < seen.agentCount(); k++) {
+            line.ascii(k == 0 ? "[" : ",[");
+            line.text(seen.agentName(k));
             line.put(',');
-            relative(line, a.at());
+            relative(line, seen.agentDistance(k), seen.agentBearing(k));
             line.put(',');
-            line.integer((int) LeanUnits.milliradians(a.heading()));
+            line.integer((int) LeanUnits.milliradians(seen.agentHeading(k)));
             line.put(',');
-            line.integer(LeanUnits.size(a.radius()));
+            line.integer(LeanUnits.size(seen.agentRadius(k)));
             line.put(']');
         }
         line.ascii("],\"fruit\":[");
-        List<PerceivedFruit> fruit = seen.fruit();
-        for (int i = 0; i < fruit.size(); i++) {
-            PerceivedFruit f = fruit.get(i);
-            line.ascii(i == 0 ? "[" : ",[");
-            line.text(f.id());
-            line.put(',');
-            line.text(f.kind().wireName());
-            line.put(',');
-            line.integer(LeanUnits.centimetres(f.position().x()));
-            line.put(',');
-            line.integer(LeanUnits.centimetres(f.position().y()));
-            line.put(',');
-            line.integer(LeanUnits.centimetres(f.position().z()));
-            line.put(',');
-            if (f.support() == null) {
-                line.ascii("null");
-            } else {
-                line.text(f.support());
+        for (int k = 0; k < seen.fruitCount(); k++) {
+            if (k > 0) {
+                line.put(',');
             }
-            line.put(']');
+            int index = seen.fruitIndex(k);
+            line.bytes(tuples.fruit, tuples.fruitStart[index], tuples.fruitStart[index + 1]);
         }
         line.put(']');
-        PerceivedRiver river = landmarks.river();
+        PerceivedRiver river = seen.river();
         if (river != null) {
             line.ascii(",\"river\":[");
             relative(line, river.nearest());
@@ -109,7 +88,7 @@ final class LeanLines {
             line.put(']');
         }
         line.ascii(",\"bridges\":[");
-        List<PerceivedBridge> bridges = landmarks.bridges();
+        List<PerceivedBridge> bridges = seen.bridges();
         for (int i = 0; i < bridges.size(); i++) {
             PerceivedBridge b = bridges.get(i);
             line.ascii(i == 0 ? "[" : ",[");
@@ -123,86 +102,83 @@ final class LeanLines {
             line.put(']');
         }
         line.ascii("],\"castle\":\"");
-        line.ascii(castle.sector().wireName());
+        line.ascii(seen.castle().wireName());
         line.ascii("\"}\n");
-        out.writeBytes(line.bytes, 0, line.size);
     }
 
     /** A distance and a bearing as two elements of a tuple. */
-    private static void relative(Line line, RelativePosition at) {
-        line.integer(LeanUnits.centimetres(at.distance()));
+    private static void relative(LineBytes line, RelativePosition at) {
+        relative(line, at.distance(), at.bearing());
+    }
+
+    private static void relative(LineBytes line, double distance, double bearing) {
+        line.integer(LeanUnits.centimetres(distance));
         line.put(',');
-        line.integer((int) LeanUnits.milliradians(at.bearing()));
+        line.integer((int) LeanUnits.milliradians(bearing));
     }
 
     /**
-     * A line being built in an array of the writing thread, handed to the buffer at once: a byte
-     * at a time into a buffer costs a bounds check and an index update each, which made writing a
-     * line cost more than its few bytes.
+     * The lean tuples of a world's trees, tables and fruit, encoded once: for a tree or table the
+     * bytes before its distance and bearing ({@code ["T17","tree",}) and after them
+     * ({@code ,150,600]}), for a fruit its whole tuple. All in one array each, so that the things of
+     * one view lie close together in memory rather than behind a record and a string each.
      */
-    private static final class Line {
-        byte[] bytes = new byte[4096];
-        int size;
+    static final class Tuples {
+        final byte[] objects;
+        /** Where obstacle i's bytes start (and, at i + 1, end). */
+        final int[] objectStart;
+        /** Where obstacle i's bytes after its distance and bearing start. */
+        final int[] objectSplit;
+        final byte[] fruit;
+        /** Where fruit i's tuple starts (and, at i + 1, ends). */
+        final int[] fruitStart;
 
-        private void room(int more) {
-            if (size + more > bytes.length) {
-                bytes = Arrays.copyOf(bytes, Math.max(2 * bytes.length, size + more));
+        Tuples(Perceivables things) {
+            LineBytes line = new LineBytes(1 << 16);
+            objectStart = new int[things.obstacles() + 1];
+            objectSplit = new int[things.obstacles()];
+            for (int i = 0; i < things.obstacles(); i++) {
+                Obstacle o = things.obstacle(i);
+                objectStart[i] = line.size();
+                line.put('[');
+                line.text(o.id());
+                line.put(',');
+                line.text(o.kind().wireName());
+                line.put(',');
+                objectSplit[i] = line.size();
+                line.put(',');
+                line.integer(LeanUnits.size(o.radius()));
+                line.put(',');
+                line.integer(LeanUnits.size(o.height()));
+                line.put(']');
             }
-        }
-
-        void put(char c) {
-            room(1);
-            bytes[size++] = (byte) c;
-        }
-
-        void ascii(String text) {
-            int length = text.length();
-            room(length);
-            for (int i = 0; i < length; i++) {
-                bytes[size++] = (byte) text.charAt(i);
-            }
-        }
-
-        void integer(long value) {
-            if (value == Long.MIN_VALUE) {
-                ascii(Long.toString(value));
-                return;
-            }
-            room(20);
-            if (value < 0) {
-                bytes[size++] = '-';
-                value = -value;
-            }
-            int first = size;
-            do {
-                bytes[size++] = (byte) ('0' + value % 10);
-                value /= 10;
-            } while (value > 0);
-            for (int i = first, j = size - 1; i < j; i++, j--) {
-                byte swap = bytes[i];
-                bytes[i] = bytes[j];
-                bytes[j] = swap;
-            }
-        }
-
-        /** A JSON string: plain printable ASCII is copied, anything else is escaped as the codec escapes it. */
-        void text(String text) {
-            int length = text.length();
-            for (int i = 0; i < length; i++) {
-                char c = text.charAt(i);
-                if (c < 0x20 || c > 0x7e || c == '"' || c == '\\') {
-                    ByteBuf escaped = Unpooled.buffer(length + 8);
-                    FastLines.text(escaped, text);
-                    int n = escaped.readableBytes();
-                    room(n);
-                    escaped.readBytes(bytes, size, n);
-                    size += n;
-                    return;
+            objectStart[things.obstacles()] = line.size();
+            objects = line.toArray();
+            line.clear();
+            fruitStart = new int[things.fruit() + 1];
+            for (int i = 0; i < things.fruit(); i++) {
+                PerceivedFruit f = things.fruit(i);
+                fruitStart[i] = line.size();
+                line.put('[');
+                line.text(f.id());
+                line.put(',');
+                line.text(f.kind().wireName());
+                line.put(',');
+                line.integer(LeanUnits.centimetres(f.position().x()));
+                line.put(',');
+                line.integer(LeanUnits.centimetres(f.position().y()));
+                line.put(',');
+                line.integer(LeanUnits.centimetres(f.position().z()));
+                line.put(',');
+                if (f.support() == null) {
+                    line.ascii("null");
+                } else {
+                    line.text(f.support());
                 }
+                line.put(']');
             }
-            put('"');
-            ascii(text);
-            put('"');
+            fruitStart[things.fruit()] = line.size();
+            fruit = line.toArray();
         }
     }
 }

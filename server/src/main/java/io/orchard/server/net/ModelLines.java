@@ -33,7 +33,7 @@ final class ModelLines {
     static Cut cut(MessageCodec codec, AgentAddedMessage message) {
         AgentState agent = message.agent();
         AgentState empty = new AgentState(agent.name(), agent.body(), agent.position(), agent.heading(),
-                new ModelSpec(agent.model().format(), null, ""), agent.joints(), agent.timeSensors());
+                new ModelSpec(agent.model().format(), null, "", agent.model().fit()), agent.joints(), agent.timeSensors());
         byte[] line = codec.encodeLine(new AgentAddedMessage(message.tick(), empty));
         // Inside a JSON string every quote is escaped, so the first "model":{ is the field itself.
         int model = indexOf(line, MODEL, 0);

@@ -109,7 +109,7 @@ final class ModelStore {
             held += size;
             return new Admitted(model, null);
         }
-        return new Admitted(text == data ? model : new ModelSpec(model.format(), null, text), null);
+        return new Admitted(text == data ? model : new ModelSpec(model.format(), null, text, model.fit()), null);
     }
 
     /**

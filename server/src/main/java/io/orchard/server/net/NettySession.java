@@ -10,6 +10,7 @@ import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.ClientSession;
 import io.orchard.server.sim.EncodedLine;
+import io.orchard.server.sim.Percept;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -25,9 +26,10 @@ import org.slf4j.LoggerFactory;
  * often do), so a busy server makes fewer, larger writes. The data of an agent's
  * model is not encoded per client: it is written from the one copy the {@link ModelStore} keeps for
  * every client. A client that stops reading is cut off by its outbox, so it can neither stall the
- * tick nor grow the server's memory. A client that reads the lean form ({@link ClientForms}) gets the
- * three messages of each perception, which the simulation sends one after the other, as one
- * {@code LeanPerception} line ({@link TickLines}), and no result for an accepted move unless it asked.
+ * tick nor grow the server's memory. A perception comes as a {@link Percept}, written on the I/O
+ * thread in the form the client reads ({@link ClientForms}): one {@code LeanPerception} line, or the
+ * ordinary form's three ({@link TickLines}); a lean client gets no result for an accepted move
+ * unless it asked.
  *
  * <p>{@link #send} and {@link #flush} are called by the simulation's thread only.
  */
@@ -53,6 +55,8 @@ final class NettySession implements ClientSession {
     private List<Object> waiting;
     /** Flushes whose messages wait in {@link #waiting}. */
     private int waitingFlushes;
+    /** {@link #writeWaiting()}, made once rather than at every flush. */
+    private final Runnable writeWaiting = this::writeWaiting;
 
     /**
      * Made on the channel's I/O thread, for a client that speaks protocol {@code version} on a
@@ -84,18 +88,26 @@ final class NettySession implements ClientSession {
         return version;
     }
 
+    // What is sent to a connection that has closed is dropped at the flush, which checks once for
+    // the whole batch rather than the channel's state for every message.
+
     @Override
     public void send(ServerMessage message) {
-        if (isOpen() && forms.sends(message)) {
-            batch.add(message);
+        if (forms.sends(message)) {
+            batch.add(version < 2 && message instanceof AgentAddedMessage added ? added.forVersion1() : message);
         }
     }
 
     @Override
+    public void send(Percept percept) {
+        batch.add(percept);
+    }
+
+    @Override
     public void send(EncodedLine line) {
-        if (isOpen()) {
-            batch.add(line);
-        }
+        // A model of version 2 is written anew for a version 1 client, without what it does not know.
+        batch.add(version < 2 && line.message() instanceof AgentAddedMessage added
+                && added.forVersion1() != added ? added.forVersion1() : line);
     }
 
     @Override
@@ -105,7 +117,10 @@ final class NettySession implements ClientSession {
         }
         List<Object> out = batch;
         batch = new ArrayList<>(Math.max(8, out.size()));
-        if (!isOpen()) {
+        // Only whether the connection has ended, which is this object's: the channel's own state is
+        // the network thread's memory, a cache miss per client per tick here. What goes to a channel
+        // that closed a moment ago is dropped by its outbox.
+        if (ended.get()) {
             return;
         }
         synchronized (handoff) {
@@ -122,7 +137,7 @@ final class NettySession implements ClientSession {
             waiting = out;
             waitingFlushes = 1;
         }
-        shared.writes().submit(channel.eventLoop(), this::writeWaiting);
+        shared.writes().submit(channel.eventLoop(), writeWaiting);
     }
 
     /** On the channel's I/O thread: takes what waits and writes it. */

@@ -41,7 +41,8 @@ final class ServerInitializer extends ChannelInitializer<SocketChannel> {
         pipeline.addLast("deadline", new LineDeadline(limits.lineDeadline(), System::nanoTime));
         pipeline.addLast("large", new LargeLineGate(largeLines));
         pipeline.addLast("frame", new LineBasedFrameDecoder(MessageCodec.MAX_LARGE_LINE_BYTES + 1, true, true));
-        pipeline.addLast("flood", new FloodGuard(limits.messagesPerSecond(), limits.burst(), System::nanoTime));
+        pipeline.addLast("flood", new FloodGuard(limits.messagesPerSecond(), limits.burst(), System::nanoTime,
+                shared.inbox()::lockstepTicks));
         pipeline.addLast("decoder", decoder);
         pipeline.addLast("session", new SessionHandler(shared));
     }

@@ -72,6 +72,12 @@ final class SessionHandler extends SimpleChannelInboundHandler<ClientMessage> {
                         "Hello: the handshake is already done"));
             } else if (message instanceof GameControlMessage control && !operator) {
                 ctx.writeAndFlush(notOperator(control));
+            } else if (message instanceof RegisterMessage register && session.protocolVersion() < 2
+                    && register.model() != null && register.model().forVersion1() != register.model()) {
+                ctx.writeAndFlush(new ErrorMessage(register.seq(), ErrorCode.INVALID_VALUE, register.model().fit() != null
+                        ? "model.fit is protocol version 2; this client speaks version 1"
+                        : "model.format '" + register.model().format().wireName()
+                                + "' is protocol version 2; this client speaks version 1"));
             } else if (message instanceof RegisterMessage register && session.role() == Role.AGENT
                     && register.model() != null && register.model().data() != null) {
                 registerWithModel(ctx, register);

@@ -151,9 +151,10 @@ final class Actions {
         Vec3 here = agent.position;
         // Without a from the agent walks from wherever it is now, however late the move arrived.
         if (move.from() != null && here.groundDistance(move.from()) > MoveMessage.FROM_TOLERANCE) {
-            reject(agent, move.seq(), move, String.format(java.util.Locale.ROOT,
-                    "from (%.2f, %.2f) is not where %s is: (%.2f, %.2f), it may be at most %s units away",
-                    move.from().x(), move.from().z(), agent.name, here.x(), here.z(), MoveMessage.FROM_TOLERANCE));
+            reject(agent, move.seq(), move, "from (" + Decimals.twoPlaces(move.from().x()) + ", "
+                    + Decimals.twoPlaces(move.from().z()) + ") is not where " + agent.name + " is: ("
+                    + Decimals.twoPlaces(here.x()) + ", " + Decimals.twoPlaces(here.z()) + "), it may be at most "
+                    + MoveMessage.FROM_TOLERANCE + " units away");
             return;
         }
         Vec3 to = Vec3.ground(move.to().x(), move.to().z());

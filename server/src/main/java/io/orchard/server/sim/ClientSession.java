@@ -29,6 +29,14 @@ public interface ClientSession {
     /** Queues one message for this client. */
     void send(ServerMessage message);
 
+    /**
+     * Queues what its agent perceived in a tick: as its three messages of the ordinary form unless
+     * the session writes it in a form of its own ({@link Percept}).
+     */
+    default void send(Percept percept) {
+        percept.messages().forEach(this::send);
+    }
+
     /** Queues a message already encoded once for many clients. */
     void send(EncodedLine line);
 

@@ -115,12 +115,13 @@ final class Game {
         }
     }
 
-    /** A client's start, pause or resume, answered with whether it was done. */
+    /** A client's start, pause or resume (not restart), answered with whether it was done. */
     void control(ClientSession session, GameControlMessage control) {
         String refused = switch (control.command()) {
             case START -> phase == Phase.WAITING ? null : "the game has already started";
             case PAUSE -> phase == Phase.RUNNING ? null : "the game is not running";
             case RESUME -> phase == Phase.PAUSED ? null : "the game is not paused";
+            case RESTART -> throw new IllegalArgumentException("a restart makes a new game: the simulation's to do");
         };
         if (refused != null) {
             outbox.send(session, new ActionResultMessage(control.seq(), null, "GameControl", Outcome.REJECTED, refused,

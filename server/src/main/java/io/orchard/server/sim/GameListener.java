@@ -26,6 +26,12 @@ public interface GameListener {
     default void gameOver(String reason, List<Score> ranking) {}
 
     /**
+     * The operator restarted the game: the one before is over, and a new one of a world made from
+     * {@code seed} waits for its agents.
+     */
+    default void newGame(long seed) {}
+
+    /**
      * In lockstep, the game went on without a client's turn: it had not ended its setup when the
      * game started, or a tick's turn when the tick ended. A game with no missed turn is the same
      * every time its agents play its seed.

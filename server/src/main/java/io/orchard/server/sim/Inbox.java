@@ -23,4 +23,12 @@ public interface Inbox {
      * welcome repeats), describing the world as it is now.
      */
     WelcomeMessage welcome(long seq, io.orchard.protocol.value.Role role, int protocolVersion);
+
+    /**
+     * How many ticks lockstep games have played on this server so far, every game together (0 on a
+     * realtime server): a client may send more lines the more ticks pass.
+     */
+    default long lockstepTicks() {
+        return 0;
+    }
 }

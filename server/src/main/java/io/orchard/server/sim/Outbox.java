@@ -1,6 +1,5 @@
 package io.orchard.server.sim;
 
-import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.Message;
@@ -10,6 +9,7 @@ import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Role;
 import io.orchard.server.sim.Recorder.Audience;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 
@@ -29,9 +29,6 @@ import java.util.TreeMap;
  * ({@link HeldRecord}).
  */
 final class Outbox {
-
-    /** Immutable and costly to build: one for every simulation. */
-    private static final MessageCodec CODEC = new MessageCodec();
 
     private final Map<Long, ClientSession> sessions = new TreeMap<>();
     private final Map<Long, ClientSession> viewers = new TreeMap<>();
@@ -71,6 +68,11 @@ final class Outbox {
     void join(ClientSession session) {
         sessions.put(session.id(), session);
         (session.role() == Role.VIEWER ? viewers : agentClients).put(session.id(), session);
+    }
+
+    /** Every connected client, in the order they connected. */
+    List<ClientSession> clients() {
+        return List.copyOf(sessions.values());
     }
 
     /** Forgets a client; false if it was not connected. */
@@ -122,6 +124,21 @@ final class Outbox {
         session.send(message);
     }
 
+    /** Sends a perception, recorded (when anything is) as its three messages. */
+    void send(ClientSession session, Percept percept) {
+        if (recording()) {
+            for (ServerMessage message : percept.messages()) {
+                record(Audience.CLIENT, session, message, null);
+            }
+        }
+        session.send(percept);
+    }
+
+    /** Whether what is sent is recorded: made into messages for the record, which costs for a perception. */
+    private boolean recording() {
+        return held != null || recorder != Recorder.NONE;
+    }
+
     /** Sends without recording: what a client is told only to catch up with what the record already holds. */
     void catchUp(ClientSession session, ServerMessage message) {
         session.send(message);
@@ -132,7 +149,7 @@ final class Outbox {
         record(null, session, null, missed);
     }
 
-    /** Sends to every client of the audience, encoding the message once for all of them. */
+    /** Sends to every client of the audience, encoded once for all by the network thread that writes it first. */
     void broadcast(ServerMessage message, Audience audience) {
         record(audience, null, message, null);
         Map<Long, ClientSession> to = switch (audience) {
@@ -144,7 +161,7 @@ final class Outbox {
         if (to.isEmpty()) {
             return;
         }
-        EncodedLine line = EncodedLine.of(CODEC, message);
+        EncodedLine line = new EncodedLine(message);
         for (ClientSession session : to.values()) {
             session.send(line);
         }
@@ -202,6 +219,9 @@ final class Outbox {
      * for a missed turn; else a message sent to the audience (to {@code client} alone for CLIENT).
      */
     private void record(Audience to, ClientSession client, Message message, MissedTurn missed) {
+        if (!recording()) {
+            return;
+        }
         String label = client == null ? null : label(client);
         if (held != null) {
             held.add(cause != null ? cause : client, cause != null ? label(cause) : label, tick, time, to, label,

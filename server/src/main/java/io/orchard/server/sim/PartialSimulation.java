@@ -208,14 +208,13 @@ public final class PartialSimulation {
      * stands in the world now (own agents, ghosts and fruit). Ghosts never perceive here.
      */
     public void perceive(long tick) {
-        AgentGrid crowd = null;
+        CrowdGrid.Query crowd = null;
         for (Agent agent : agents.values()) {
             if (ghosts.contains(agent.name) || !agent.perceivesIn(tick)) {
                 continue;
             }
-            crowd = crowd != null ? crowd : new AgentGrid(agents.values(), PERCEPTION_CELL);
-            List<ServerMessage> due = perceptions.of(agent, crowd, tick);
-            due.forEach(message -> outbox.send(agent.owner, message));
+            crowd = crowd != null ? crowd : CrowdGrid.of(agents.values(), PERCEPTION_CELL);
+            outbox.send(agent.owner, perceptions.of(agent, crowd, tick));
             agent.perceptionRequested = false;
             if (agent.perceptionEvery > 0) {
                 agent.nextPerceptionTick = tick + agent.perceptionEvery;

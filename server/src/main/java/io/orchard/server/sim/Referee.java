@@ -1,5 +1,6 @@
 package io.orchard.server.sim;
 
+import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.GameControlMessage;
@@ -7,6 +8,8 @@ import io.orchard.protocol.message.GameStartedMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.FruitKind;
+import io.orchard.protocol.value.GameCommand;
+import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
@@ -44,9 +47,11 @@ public final class Referee {
     private final Outbox outbox;
     private final Walking walking;
     private final List<GameListener> listeners;
+    private final String oneGameOnly;
 
     Referee(World world, SimulationConfig config, long seed, Map<String, Agent> agents, Registrations registrations,
-            Game game, Scoreboard scores, Turns turns, Outbox outbox, Walking walking, List<GameListener> listeners) {
+            Game game, Scoreboard scores, Turns turns, Outbox outbox, Walking walking, List<GameListener> listeners,
+            String oneGameOnly) {
         this.world = world;
         this.config = config;
         this.seed = seed;
@@ -58,6 +63,7 @@ public final class Referee {
         this.outbox = outbox;
         this.walking = walking;
         this.listeners = listeners;
+        this.oneGameOnly = oneGameOnly;
     }
 
     // ---- the clock and the phase ----------------------------------------------------------------
@@ -82,9 +88,17 @@ public final class Referee {
         return game.phase();
     }
 
-    /** A client's start, pause or resume, answered with whether it was done. */
+    /**
+     * A client's start, pause or resume, answered with whether it was done; a restart is refused, as
+     * by a server that plays one game only.
+     */
     public void control(ClientSession session, GameControlMessage control) {
-        game.control(session, control);
+        if (control.command() == GameCommand.RESTART) {
+            outbox.send(session, new ActionResultMessage(control.seq(), null, "GameControl", Outcome.REJECTED,
+                    oneGameOnly, null, 0));
+        } else {
+            game.control(session, control);
+        }
     }
 
     /** Pauses a running game or continues a paused one; returns the phase after. */

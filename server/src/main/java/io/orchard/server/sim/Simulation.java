@@ -1,21 +1,25 @@
 package io.orchard.server.sim;
 
+import io.orchard.protocol.message.ActionResultMessage;
 import io.orchard.protocol.message.AgentAddedMessage;
 import io.orchard.protocol.message.AgentMessage;
+import io.orchard.protocol.message.AgentRemovedMessage;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
 import io.orchard.protocol.message.ErrorCode;
 import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.GameControlMessage;
 import io.orchard.protocol.message.InstructionMessage;
+import io.orchard.protocol.message.NewGameMessage;
 import io.orchard.protocol.message.RegisterMessage;
 import io.orchard.protocol.message.ScoreUpdateMessage;
-import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.message.TickMessage;
 import io.orchard.protocol.message.WelcomeMessage;
 import io.orchard.protocol.message.WorldSnapshotMessage;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.protocol.value.GameCommand;
 import io.orchard.protocol.value.GamePhase;
+import io.orchard.protocol.value.Outcome;
 import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Score;
 import io.orchard.server.sim.Recorder.Audience;
@@ -28,6 +32,7 @@ import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.function.Consumer;
+import java.util.function.LongFunction;
 
 /**
  * The game: the world, the agents in it, the clock and the rules. One thread owns it (the tick
@@ -50,26 +55,39 @@ public final class Simulation implements Inbox {
     /** Cell size of the grid that finds agents near a perceiving agent. */
     private static final double PERCEPTION_CELL = 25;
 
-    private final World world;
     private final SimulationConfig config;
-    private final long seed;
     private final String serverVersion;
     private final List<GameListener> listeners;
+    private final Placement placement;
     private final BlockingQueue<Event> inbox = new LinkedBlockingQueue<>();
     private final Outbox outbox;
     /** By name, so that every pass over the agents goes in an order that does not depend on timing. */
     final Map<String, Agent> agents = new TreeMap<>();
-    private final Scoreboard scores = new Scoreboard();
-    private final Game game;
-    final Registrations registrations;
-    private final Actions actions;
-    private final Perceptions perceptions;
+    private final CheckpointRequests checkpoints = new CheckpointRequests();
     /** Whether what the clients were sent at the end of the last tick waits for the next tick's start. */
     private boolean clientsWaiting;
-    private final Grasps grasps;
-    private final Walking walking;
-    private final CheckpointRequests checkpoints = new CheckpointRequests();
-    private final Turns turns = new Turns();
+    /** Ticks played in lockstep, every game together: read by the network threads. */
+    private volatile long lockstepTicks;
+    // The game's own parts: made anew when the operator restarts the game (newGame).
+    private volatile World world;
+    private volatile long seed;
+    private Scoreboard scores;
+    private volatile Game game;
+    Registrations registrations;
+    private Actions actions;
+    private Perceptions perceptions;
+    private Grasps grasps;
+    private Walking walking;
+    private Turns turns;
+    private Duration nameReservation;
+    /** Makes the world of a restarted game from its seed; null when this server plays one game only. */
+    private LongFunction<World> worlds;
+    /** Why a restart is refused when {@link #worlds} is null. */
+    private String oneGameOnly = "this server plays one game only";
+    /** The seed of the game the operator asked for, made at the end of this tick; null when none was. */
+    private Long restartSeed;
+    /** What waits for the restart asked for to be done. */
+    private final List<Runnable> whenRestarted = new ArrayList<>();
 
     /** A simulation of {@code world} with no placement of its own: agents are placed where the world finds room. */
     public Simulation(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
@@ -80,22 +98,34 @@ public final class Simulation implements Inbox {
     /** A simulation that asks {@code placement} first where each new agent stands. */
     public Simulation(World world, SimulationConfig config, long seed, String serverVersion, Recorder recorder,
                       List<GameListener> listeners, Placement placement) {
-        this.world = world;
         this.config = config;
-        this.seed = seed;
         this.serverVersion = serverVersion;
         this.listeners = List.copyOf(listeners);
+        this.placement = placement;
         this.outbox = new Outbox(recorder);
-        this.game = new Game(world, config, seed, scores, outbox, this.listeners, this::beforeStart);
-        this.walking = new Walking(agents, config.bodyLimits().maxRadius(), outbox);
-        this.grasps = new Grasps(world, agents, scores, outbox, this.listeners);
-        this.registrations = new Registrations(world, config, seed, placement, agents, scores, walking, game, outbox,
-                this.listeners);
-        this.actions = new Actions(world, agents, walking, grasps, registrations, outbox);
-        this.perceptions = new Perceptions(world);
+        newGame(world, seed);
         // A recording must replay with no viewer connected, so it opens with the world as viewers see
         // it: a broadcast to the viewers, of whom there are none yet.
         outbox.broadcast(snapshot(), Audience.VIEWERS);
+    }
+
+    /** The parts of a game of {@code world} made from {@code seed}, none of whose agents has come yet. */
+    private void newGame(World world, long seed) {
+        this.world = world;
+        this.seed = seed;
+        agents.clear();
+        scores = new Scoreboard();
+        game = new Game(world, config, seed, scores, outbox, listeners, this::beforeStart);
+        walking = new Walking(agents, config.bodyLimits().maxRadius(), outbox);
+        grasps = new Grasps(world, agents, scores, outbox, listeners);
+        registrations = new Registrations(world, config, seed, placement, agents, scores, walking, game, outbox,
+                listeners);
+        if (nameReservation != null) {
+            registrations.departed.reserveFor(nameReservation);
+        }
+        actions = new Actions(world, agents, walking, grasps, registrations, outbox);
+        perceptions = new Perceptions(world);
+        turns = new Turns();
     }
 
     // ---- Inbox: any thread -------------------------------------------------------------------
@@ -118,6 +148,11 @@ public final class Simulation implements Inbox {
     /** Runs {@code action} on the simulation's thread, before the client events of the same tick. */
     public void execute(Runnable action) {
         inbox.add(new Event.Task(action));
+    }
+
+    @Override
+    public long lockstepTicks() {
+        return lockstepTicks;
     }
 
     @Override
@@ -148,6 +183,7 @@ public final class Simulation implements Inbox {
 
     void applyBuffered(List<Event> events) {
         apply(events);
+        restartIfAsked();
         if (game.startDue() && !agents.isEmpty() && turns.notSetUp(agentSessions()).isEmpty()) {
             game.start();
         }
@@ -166,15 +202,13 @@ public final class Simulation implements Inbox {
             turns.began(agentSessions());
         }
         outbox.broadcast(new TickMessage(tick, outbox.time()), Audience.ALL);
-        AgentGrid crowd = null;
+        CrowdGrid.Query crowd = null;
         for (Agent agent : agents.values()) {
             if (agent.perceivesIn(tick)) {
                 if (crowd == null) {
-                    crowd = new AgentGrid(agents.values(), PERCEPTION_CELL);
+                    crowd = CrowdGrid.of(agents.values(), PERCEPTION_CELL);
                 }
-                for (ServerMessage perception : perceptions.of(agent, crowd, tick)) {
-                    outbox.send(agent.owner, perception);
-                }
+                outbox.send(agent.owner, perceptions.of(agent, crowd, tick));
                 agent.perceptionRequested = false;
                 if (agent.perceptionEvery > 0) {
                     agent.nextPerceptionTick = tick + agent.perceptionEvery;
@@ -205,8 +239,8 @@ public final class Simulation implements Inbox {
     }
 
     /**
-     * The second half of a tick; when {@code nextFollows} (the next tick begins at once, as in
-     * realtime) and the game goes on, what the clients were sent waits for the next tick's
+     * The second half of a tick; when {@code nextFollows} (the next tick begins at once, as in the
+     * tick loop) and the game goes on, what the clients were sent waits for the next tick's
      * perceptions and goes out with them: one write per client per tick instead of two, for a delay
      * of the next tick's first half. What it sends is the same, in the same order.
      */
@@ -231,10 +265,14 @@ public final class Simulation implements Inbox {
             }
             outbox.at(tick + 1, time);
             game.checkOver();
+            if (lockstep()) {
+                lockstepTicks = lockstepTicks + 1; // this thread alone writes it
+            }
             listeners.forEach(l -> l.tickEnded(tick, time));
         } else {
             grasps.clear();
         }
+        restartIfAsked();
         clientsWaiting = nextFollows && game.running();
         if (clientsWaiting) {
             outbox.flushRecord();
@@ -280,6 +318,8 @@ public final class Simulation implements Inbox {
     private void handle(ClientSession session, ClientMessage message) {
         if (message instanceof RegisterMessage register) {
             registrations.register(session, register);
+        } else if (message instanceof GameControlMessage control && control.command() == GameCommand.RESTART) {
+            restartAsked(session, control);
         } else if (message instanceof GameControlMessage control) {
             game.control(session, control);
         } else if (message instanceof InstructionMessage instruction) {
@@ -365,6 +405,81 @@ public final class Simulation implements Inbox {
         game.end(reason);
     }
 
+    // ---- restarts ------------------------------------------------------------------------------
+
+    /**
+     * Lets the operator restart the game ({@code GameControl restart}): {@code worlds} makes the new
+     * game's world from its seed. Without it (the default) a restart is refused. Call before the
+     * simulation's thread starts.
+     */
+    public void restartsWith(LongFunction<World> worlds) {
+        this.worlds = worlds;
+    }
+
+    /**
+     * Refuses the operator's restarts, with the reason given ("this server records its game").
+     * Call before the simulation's thread starts.
+     */
+    public void oneGameOnly(String reason) {
+        this.worlds = null;
+        this.oneGameOnly = reason;
+    }
+
+    /**
+     * Restarts the game at the end of the current tick (at once while no tick runs), as the operator
+     * can, and then runs {@code done}. Call on the simulation's thread ({@link #execute}).
+     *
+     * @throws IllegalStateException when this server plays one game only, saying why
+     */
+    public void restart(long newSeed, Runnable done) {
+        if (worlds == null) {
+            throw new IllegalStateException(oneGameOnly);
+        }
+        restartSeed = newSeed;
+        whenRestarted.add(done);
+    }
+
+    private void restartAsked(ClientSession session, GameControlMessage control) {
+        boolean accepted = worlds != null;
+        if (accepted) {
+            restartSeed = control.seed() != null ? control.seed() : seed;
+        }
+        outbox.send(session, new ActionResultMessage(control.seq(), null, "GameControl",
+                accepted ? Outcome.ACCEPTED : Outcome.REJECTED, accepted ? null : oneGameOnly, null, 0));
+    }
+
+    /**
+     * The restart asked for in this tick: the game ends, if it is not over, and its agents leave the
+     * world; a version 1 client, which knows of one game only, is let go; and a new game of a new
+     * world waits for agents at tick 0, as on a new server. Every other client hears {@code NewGame},
+     * and viewers the new world.
+     */
+    private void restartIfAsked() {
+        if (restartSeed == null) {
+            return;
+        }
+        long next = restartSeed;
+        restartSeed = null;
+        game.end("restarted by the operator");
+        for (Agent agent : agents.values()) {
+            outbox.broadcast(new AgentRemovedMessage(outbox.tick(), agent.name, "the game restarted"), Audience.ALL);
+        }
+        for (ClientSession client : outbox.clients()) {
+            if (client.protocolVersion() < 2) {
+                outbox.leave(client);
+                client.close(new ErrorMessage(0, ErrorCode.GAME_NOT_RUNNING, "the game is over and the operator "
+                        + "started another, which a version 1 client cannot follow: connect again to play it"));
+            }
+        }
+        newGame(worlds.apply(next), next);
+        outbox.at(0, 0);
+        outbox.broadcast(new NewGameMessage(0, config.timeLimit()), Audience.ALL);
+        outbox.broadcast(snapshot(), Audience.VIEWERS);
+        listeners.forEach(l -> l.newGame(next));
+        whenRestarted.forEach(Runnable::run);
+        whenRestarted.clear();
+    }
+
     // ---- checkpoints ---------------------------------------------------------------------------
 
     /**
@@ -422,6 +537,7 @@ public final class Simulation implements Inbox {
      */
     public void reserveDroppedNames(Duration time) {
         registrations.departed.reserveFor(time);
+        nameReservation = time;
     }
 
     /**
@@ -434,7 +550,7 @@ public final class Simulation implements Inbox {
     public Referee referee(Recorder recorder) {
         outbox.recordOnly(recorder);
         return new Referee(world, config, seed, agents, registrations, game, scores, turns, outbox, walking,
-                listeners);
+                listeners, oneGameOnly);
     }
 
     /** Names of the agents of a restored game that are still waiting for their controllers. */

@@ -11,8 +11,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The thread that owns the simulation and drives its clock. In realtime mode ticks are due on a
  * fixed wall-clock schedule (20 a second by default) and what arrives late waits for the next; in
- * lockstep mode a tick ends as soon as every client that drives an agent has ended its turn, or
- * when the deadline passes ({@link SimulationConfig#lockstepDeadline()}; a client that misses it
+ * lockstep mode a tick ends as soon as every client that drives an agent has ended its turn (at
+ * once when there is none), or when the deadline passes ({@link SimulationConfig#lockstepDeadline()}; a client that misses it
  * several times in a row is no longer waited for, see {@link Turns}). While no game runs it applies
  * what clients send as it comes; a lockstep game whose agents have come starts when their setup
  * turns are over, or when the deadline passes. It measures how long each tick works
@@ -145,7 +145,9 @@ public final class TickLoop implements Runnable {
         }
         sim.drain(events);
         long ending = clock.nanoTime();
-        sim.endTick(events, !sim.lockstep());
+        // The next tick begins at once in either mode (once due, in realtime): what the end of this
+        // one sends goes out with its start, in one write per client, for one wake-up instead of two.
+        sim.endTick(events, true);
         work += clock.nanoTime() - ending;
         times.record(work, late);
     }
@@ -159,9 +161,10 @@ public final class TickLoop implements Runnable {
         // Who drives an agent cannot change before the end of the tick (registrations take effect
         // then), except by leaving. Late clients are not waited for.
         Set<Long> waiting = new HashSet<>(sim.turnsToWaitFor());
-        boolean anyone = !waiting.isEmpty();
+        // No agent's client to wait for (its agents' clients have all left): every turn is over at
+        // once, and the tick with it; the game runs on to its end, or to a command that changes it.
         while (!stopped) {
-            if (anyone && waiting.isEmpty()) {
+            if (waiting.isEmpty()) {
                 return;
             }
             long left = deadline - clock.nanoTime();

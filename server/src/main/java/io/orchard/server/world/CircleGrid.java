@@ -26,6 +26,14 @@ final class CircleGrid {
     private final int rows;
     private final int[] start;
     private final int[] items;
+    /** The items' coordinates in the order of {@link #items}: a query reads them one after the other. */
+    private final double[] itemX;
+    private final double[] itemZ;
+
+    /** Receives an item with its coordinates, read from the grid's own copy. */
+    interface ItemAt {
+        void accept(int item, double x, double z);
+    }
 
     /**
      * @param x the items' x coordinates
@@ -51,6 +59,12 @@ final class CircleGrid {
         for (int i = 0; i < x.length; i++) {
             items[fill[cellOf[i]]++] = i;
         }
+        this.itemX = new double[x.length];
+        this.itemZ = new double[x.length];
+        for (int k = 0; k < items.length; k++) {
+            itemX[k] = x[items[k]];
+            itemZ[k] = z[items[k]];
+        }
     }
 
     /** About two items per cell on average, within limits that keep small and huge worlds sensible. */
@@ -65,6 +79,25 @@ final class CircleGrid {
 
     private int row(double z) {
         return Math.max(0, Math.min(rows - 1, (int) Math.floor((z - minZ) / cell)));
+    }
+
+    /**
+     * As {@link #forEachInBox(double, double, double, double, IntConsumer)}, with each item's
+     * coordinates: the items of a cell and their coordinates lie next to each other in memory,
+     * where the arrays by item would cost a cache miss per item for the many a query rejects.
+     */
+    void forEachInBox(double boxMinX, double boxMinZ, double boxMaxX, double boxMaxZ, ItemAt action) {
+        int firstColumn = column(boxMinX);
+        int lastColumn = column(boxMaxX);
+        int lastRow = row(boxMaxZ);
+        for (int r = row(boxMinZ); r <= lastRow; r++) {
+            int base = r * columns;
+            int end = start[base + lastColumn + 1];
+            // The cells of a row's columns are consecutive, so their items are too.
+            for (int k = start[base + firstColumn]; k < end; k++) {
+                action.accept(items[k], itemX[k], itemZ[k]);
+            }
+        }
     }
 
     /** Gives every item filed in a cell that meets the box; callers test the items themselves. */

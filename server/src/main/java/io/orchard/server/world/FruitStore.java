@@ -101,15 +101,20 @@ final class FruitStore {
         return left;
     }
 
+    /** Every fruit, taken or not, in the order the world was made with. */
+    List<FruitState> allStates() {
+        return List.of(states);
+    }
+
     void visitWithin(double cx, double cz, double range, SightBox box, NearbyVisitor visitor) {
         double rangeSq = range * range;
-        grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
+        grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), (i, atX, atZ) -> {
             if (present[i]) {
-                double dx = x[i] - cx;
-                double dz = z[i] - cz;
+                double dx = atX - cx;
+                double dz = atZ - cz;
                 double distanceSq = dx * dx + dz * dz;
                 if (distanceSq <= rangeSq) {
-                    visitor.fruit(states[i], x[i], z[i], Math.sqrt(distanceSq));
+                    visitor.fruit(i, states[i], atX, atZ, Math.sqrt(distanceSq));
                 }
             }
         });

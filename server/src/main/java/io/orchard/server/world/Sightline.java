@@ -1,7 +1,10 @@
 package io.orchard.server.world;
 
+import org.locationtech.jts.algorithm.Orientation;
+import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.Polygon;
 
 /**
  * Line of sight on the ground: the castle's walls are the only thing tall and solid enough to hide
@@ -17,10 +20,41 @@ final class Sightline {
 
     private final Castle castle;
     private final Envelope envelope;
+    /** The castle's rings of walls: a wall from each point of a ring to the next. */
+    private final Coordinate[][] rings;
 
     Sightline(Castle castle) {
         this.castle = castle;
         this.envelope = castle.polygon().getEnvelopeInternal();
+        Polygon polygon = castle.polygon();
+        this.rings = new Coordinate[polygon.getNumInteriorRing() + 1][];
+        rings[0] = polygon.getExteriorRing().getCoordinates();
+        for (int i = 0; i < polygon.getNumInteriorRing(); i++) {
+            rings[i + 1] = polygon.getInteriorRingN(i).getCoordinates();
+        }
+    }
+
+    /**
+     * Whether the sight line crosses a wall properly: through the inside of both, away from the
+     * wall's ends and its own. It then runs through the castle's inside on one side of the wall, so
+     * it is blocked; the general test below (JTS's relate, which allocates a graph of the castle
+     * for every line) is left for the lines that only touch walls or corners, or do not meet them
+     * at all. The orientation tests are JTS's own exact ones, so both agree.
+     */
+    private boolean crossesAWall(double ax, double az, double bx, double bz) {
+        Coordinate a = new Coordinate(ax, az);
+        Coordinate b = new Coordinate(bx, bz);
+        for (Coordinate[] ring : rings) {
+            for (int i = 0; i + 1 < ring.length; i++) {
+                Coordinate p = ring[i];
+                Coordinate q = ring[i + 1];
+                if (Orientation.index(a, b, p) * Orientation.index(a, b, q) < 0
+                        && Orientation.index(p, q, a) * Orientation.index(p, q, b) < 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Whether the castle comes within {@code range} of a point (by its bounding box): if not, it hides nothing there. */
@@ -31,6 +65,9 @@ final class Sightline {
     boolean clear(double ax, double az, double bx, double bz) {
         if (!envelope.intersects(new Envelope(ax, bx, az, bz))) {
             return true;
+        }
+        if (crossesAWall(ax, az, bx, bz)) {
+            return false;
         }
         Geometry line = Shapes.path(ax, az, bx, bz);
         if (!castle.prepared().intersects(line)) {

@@ -171,6 +171,14 @@ public final class World {
         return fruit.states();
     }
 
+    /**
+     * Every fruit the world was made with, taken or not, in order: what the fruit indices of a
+     * {@link NearbyVisitor} refer to.
+     */
+    public List<FruitState> allFruitStates() {
+        return fruit.allStates();
+    }
+
     /** The fruit with this id, if it is still there. */
     public Optional<Fruit> fruit(String id) {
         return fruit.get(id);
@@ -306,15 +314,13 @@ public final class World {
         Checks.present(box, "box");
         Checks.present(visitor, "visitor");
         double rangeSq = range * range;
-        double[] obstacleX = obstacles.x;
-        double[] obstacleZ = obstacles.z;
         Obstacle[] records = obstacles.records;
-        obstacles.grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), i -> {
-            double dx = obstacleX[i] - x;
-            double dz = obstacleZ[i] - z;
+        obstacles.grid.forEachInBox(box.minX(), box.minZ(), box.maxX(), box.maxZ(), (i, atX, atZ) -> {
+            double dx = atX - x;
+            double dz = atZ - z;
             double distanceSq = dx * dx + dz * dz;
             if (distanceSq <= rangeSq) {
-                visitor.obstacle(records[i], obstacleX[i], obstacleZ[i], Math.sqrt(distanceSq));
+                visitor.obstacle(i, records[i], atX, atZ, Math.sqrt(distanceSq));
             }
         });
         fruit.visitWithin(x, z, range, box, visitor);
@@ -325,7 +331,7 @@ public final class World {
         List<Obstacle> found = new ArrayList<>();
         visitWithin(centre.x(), centre.z(), range, new NearbyVisitor() {
             @Override
-            public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+            public void obstacle(int index, Obstacle obstacle, double x, double z, double distance) {
                 found.add(obstacle);
             }
         });
@@ -337,7 +343,7 @@ public final class World {
         List<FruitState> found = new ArrayList<>();
         visitWithin(centre.x(), centre.z(), range, new NearbyVisitor() {
             @Override
-            public void fruit(FruitState state, double x, double z, double distance) {
+            public void fruit(int index, FruitState state, double x, double z, double distance) {
                 found.add(state);
             }
         });

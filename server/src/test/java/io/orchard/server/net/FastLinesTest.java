@@ -6,6 +6,7 @@ import io.netty.buffer.ByteBuf;
 import io.netty.buffer.Unpooled;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.ActionResultMessage;
+import io.orchard.protocol.message.AgentMovedMessage;
 import io.orchard.protocol.message.CastlePerceptionMessage;
 import io.orchard.protocol.message.LandmarkPerceptionMessage;
 import io.orchard.protocol.message.PerceptionMessage;
@@ -94,7 +95,7 @@ class FastLinesTest {
     }
 
     @Test
-    void landmarksCastleTicksAndResultsAreWrittenAsTheCodecWritesThem() {
+    void landmarksCastleTicksMovesAndResultsAreWrittenAsTheCodecWritesThem() {
         for (int n = 0; n < 2000; n++) {
             List<PerceivedBridge> bridges = new ArrayList<>();
             for (int i = random.nextInt(3); i > 0; i--) {
@@ -104,6 +105,8 @@ class FastLinesTest {
                     : new PerceivedRiver(at(), number()), bridges));
             same(new CastlePerceptionMessage(n, "Guppy", Sector.values()[random.nextInt(8)]));
             same(new TickMessage(random.nextLong() & Long.MAX_VALUE, Math.abs(number())));
+            same(new AgentMovedMessage(random.nextLong() & Long.MAX_VALUE, "Guppy", new Vec3(number(), number(),
+                    number()), new Vec3(number(), 0, number()), Math.abs(number()), Math.abs(number())));
             same(new ActionResultMessage(random.nextLong() & Long.MAX_VALUE, random.nextBoolean() ? null : "Guppy",
                     "Move", Outcome.values()[random.nextInt(3)], random.nextBoolean() ? null
                     : "path crosses tree \"T17\" \n é", random.nextBoolean() ? null : new Vec3(number(), 0, number()),

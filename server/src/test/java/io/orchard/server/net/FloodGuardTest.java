@@ -17,6 +17,10 @@ class FloodGuardTest {
     private final EmbeddedChannel channel = new EmbeddedChannel(new FloodGuard(10, 20, now::get));
 
     private int passed(int lines) {
+        return passed(channel, lines);
+    }
+
+    private static int passed(EmbeddedChannel channel, int lines) {
         int passed = 0;
         for (int i = 0; i < lines && channel.isOpen(); i++) {
             ByteBuf line = Unpooled.buffer(1).writeByte('x');
@@ -44,9 +48,28 @@ class FloodGuardTest {
         assertThat(passed(25)).isEqualTo(20);
         ErrorMessage error = channel.readOutbound();
         assertThat(error.code()).isEqualTo(ErrorCode.RATE_LIMITED);
-        assertThat(error.text()).contains("more than 10 messages per second (burst 20)");
+        assertThat(error.text()).contains("more than 10 messages per second (burst 20, and 100 more for each tick of a "
+                + "lockstep game)");
         assertThat(channel.isOpen()).isFalse();
         assertThat((Object) channel.readOutbound()).as("one error, not one per dropped line").isNull();
+    }
+
+    @Test
+    void eachTickOfALockstepGameLetsAClientSendAHundredLinesMoreWhateverTheTimeTaken() {
+        AtomicLong ticks = new AtomicLong();
+        EmbeddedChannel lockstep = new EmbeddedChannel(new FloodGuard(10, 200, now::get, ticks::get));
+        int passed = 0;
+        for (int tick = 0; tick < 50; tick++) { // 50 ticks in no time at all: far beyond 10 lines a second
+            ticks.incrementAndGet();
+            passed += passed(lockstep, FloodGuard.LINES_PER_LOCKSTEP_TICK);
+        }
+        assertThat(passed).isEqualTo(50 * FloodGuard.LINES_PER_LOCKSTEP_TICK);
+        assertThat(lockstep.isOpen()).isTrue();
+        // No tick passes, no time: what is left of the burst passes, then the guard trips.
+        assertThat(passed(lockstep, 150)).isEqualTo(200 - FloodGuard.LINES_PER_LOCKSTEP_TICK);
+        assertThat(lockstep.isOpen()).isFalse();
+        ErrorMessage error = lockstep.readOutbound();
+        assertThat(error.code()).isEqualTo(ErrorCode.RATE_LIMITED);
     }
 
     @Test

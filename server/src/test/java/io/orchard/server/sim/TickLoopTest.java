@@ -95,12 +95,30 @@ class TickLoopTest {
     }
 
     @Test
-    void aLockstepTicksEndGoesOutAtOnce() throws InterruptedException {
+    void aLockstepTicksEndGoesOutWithTheNextTicksStart() throws InterruptedException {
         running(ClockMode.LOCKSTEP);
         sim.received(client, new PerceptionRequestMessage(3, "Guppy", 0));
         sim.received(client, new EndTurnMessage(4, 0));
         loop.step();
-        assertThat(client.all(ActionResultMessage.class)).isNotEmpty();
+        // Its result waits for tick 1's start, which follows at once: one write, one wake-up of the client.
+        ServerMessage result = client.last(ActionResultMessage.class);
+        assertThat(client.received.indexOf(result)).isGreaterThanOrEqualTo(client.flushed);
+        sim.received(client, new EndTurnMessage(5, 1));
+        loop.step();
+        assertThat(client.received.indexOf(result)).isLessThan(client.flushed)
+                .isLessThan(client.received.indexOf(client.last(TickMessage.class)));
+        assertThat(client.all(TickMessage.class)).extracting(TickMessage::tick).containsExactly(0L, 1L);
+    }
+
+    @Test
+    void whatALockstepTicksEndLeftGoesOutWhenTheGameIsOver() throws InterruptedException {
+        running(ClockMode.LOCKSTEP);
+        sim.received(client, new PerceptionRequestMessage(3, "Guppy", 0));
+        sim.received(client, new EndTurnMessage(4, 0));
+        loop.step();
+        sim.end("stopped");
+        loop.step();
+        assertThat(sim.phase()).isEqualTo(Phase.OVER);
         assertThat(client.flushed).isEqualTo(client.received.size());
     }
 
@@ -155,6 +173,20 @@ class TickLoopTest {
         loop.step(); // no EndTurn for tick 1
         assertThat(sim.tick()).isEqualTo(2);
         assertThat(clock.millis()).isEqualTo(1000);
+    }
+
+    @Test
+    void aLockstepTickWithNoAgentsClientToWaitForEndsAtOnce() throws InterruptedException {
+        running(ClockMode.LOCKSTEP);
+        sim.received(client, new EndTurnMessage(10, 0));
+        loop.step();
+        sim.disconnected(client, "gone");
+        steps(4); // tick 1 ends as the client leaves; ticks 2 to 4 have no one to wait for
+        assertThat(sim.tick()).isEqualTo(5);
+        assertThat(clock.millis()).isZero();
+        sim.end("stopped");
+        loop.step();
+        assertThat(sim.phase()).isEqualTo(Phase.OVER);
     }
 
     @Test

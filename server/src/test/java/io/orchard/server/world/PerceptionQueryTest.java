@@ -26,12 +26,12 @@ class PerceptionQueryTest {
 
         world.visitWithin(30, 30, 15, new NearbyVisitor() {
             @Override
-            public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+            public void obstacle(int index, Obstacle obstacle, double x, double z, double distance) {
                 seen.add(obstacle.id() + "@" + distance);
             }
 
             @Override
-            public void fruit(FruitState fruit, double x, double z, double distance) {
+            public void fruit(int index, FruitState fruit, double x, double z, double distance) {
                 seen.add(fruit.id() + "@" + distance);
             }
         });
@@ -69,12 +69,14 @@ class PerceptionQueryTest {
             Set<String> found = new HashSet<>();
             world.visitWithin(x, z, range, new NearbyVisitor() {
                 @Override
-                public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+                public void obstacle(int index, Obstacle obstacle, double x, double z, double distance) {
+                    assertThat(world.obstacles().get(index)).isSameAs(obstacle);
                     found.add(obstacle.id());
                 }
 
                 @Override
-                public void fruit(FruitState fruit, double x, double z, double distance) {
+                public void fruit(int index, FruitState fruit, double x, double z, double distance) {
+                    assertThat(world.allFruitStates().get(index)).isSameAs(fruit);
                     found.add(fruit.id());
                 }
             });
@@ -108,12 +110,12 @@ class PerceptionQueryTest {
             Set<String> found = new HashSet<>();
             world.visitWithin(x, z, range, SightBox.of(x, z, range, heading, field), new NearbyVisitor() {
                 @Override
-                public void obstacle(Obstacle obstacle, double x, double z, double distance) {
+                public void obstacle(int index, Obstacle obstacle, double x, double z, double distance) {
                     found.add(obstacle.id());
                 }
 
                 @Override
-                public void fruit(FruitState fruit, double x, double z, double distance) {
+                public void fruit(int index, FruitState fruit, double x, double z, double distance) {
                     found.add(fruit.id());
                 }
             });

@@ -6,6 +6,7 @@ import com.jme3.material.Material;
 import com.jme3.math.ColorRGBA;
 import com.jme3.scene.Geometry;
 import com.jme3.texture.Texture;
+import io.orchard.protocol.value.ModelFit;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.protocol.value.ModelSpec;
 import io.orchard.viewer.model.BodyModel;
@@ -18,8 +19,9 @@ import java.util.Objects;
  * Turns an agent's {@link ModelSpec} into a {@link BodyModel}, never failing: a model that
  * cannot be loaded (malformed, too large, unsafe, an unknown bundled name) becomes the model
  * package's placeholder, and the result says why. An agent that sent no model also gets the
- * placeholder, without a problem. A glTF model is fitted to the body's height and stood on the
- * ground ({@link BodyModel#fitToHeight}).
+ * placeholder, without a problem. A model is fitted to the body's height and stood on the
+ * ground ({@link BodyModel#fitToHeight}) unless its spec asks for it as authored
+ * ({@link ModelFit#AUTHORED}); a bundled model is made for the body already.
  *
  * <p>Loading touches no live scene and may run on any thread.
  */
@@ -62,11 +64,16 @@ public final class BodyModelLoader {
             BodyModel model = BodyModels.load(name, format, bytes, assets, limits);
             if (!hasGeometry(model)) {
                 return failed(name, "the " + format.wireName() + " model has nothing to draw: no shape"
-                        + " this viewer draws (PROTO instances are not expanded; Text, Inline and"
-                        + " nodes of a world are not drawn; the log names each node skipped)");
+                        + " this viewer draws (instances of an ExternProtoDeclare, Text, an Inline"
+                        + " outside the model's zip and nodes of a world are not drawn; the log names"
+                        + " each node skipped)");
             }
-            if (format == ModelFormat.GLTF || format == ModelFormat.GLB) {
+            ModelFormat loaded = model.format().orElse(format);
+            if (loaded == ModelFormat.GLTF || loaded == ModelFormat.GLB) {
                 withoutPbr(model);
+            }
+            // A bundled model is written for the body already; every other is fitted unless its author asked not.
+            if (spec.format() != ModelFormat.BUNDLED && spec.fitOrDefault() == ModelFit.BODY) {
                 model.fitToHeight(height);
             }
             return new Loaded(model, null);

@@ -70,6 +70,7 @@ public final class GameControls {
             case START -> "starting the game";
             case PAUSE -> "pausing the game";
             case RESUME -> "continuing the game";
+            case RESTART -> "restarting the game";
         };
         if (!operator) {
             notes.problem(capitalised(what) + " " + NOT_OPERATOR);
@@ -99,6 +100,7 @@ public final class GameControls {
                 case START -> "you started the game";
                 case PAUSE -> "you paused the game";
                 case RESUME -> "you continued the game";
+                case RESTART -> "you restarted the game";
             });
         } else if (reply instanceof ActionResultMessage result) {
             notes.problem(what + " refused: " + result.reason());

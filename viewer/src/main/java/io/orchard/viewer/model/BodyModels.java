@@ -3,6 +3,7 @@ package io.orchard.viewer.model;
 import com.jme3.asset.AssetManager;
 import com.jme3.scene.Node;
 import com.jme3.scene.Spatial;
+import io.orchard.protocol.value.ModelArchive;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException.Kind;
 import io.orchard.viewer.model.build.EventGraphRig;
@@ -70,6 +71,7 @@ public final class BodyModels {
                         VrmlParser.parse(bytes, limits), assets, limits);
                 case GLTF, GLB -> fromGltf(agentName, format,
                         GltfImport.load(agentName, format, bytes, assets, limits));
+                case ZIP -> fromArchive(agentName, ModelFiles.unpack(bytes, limits), assets, limits);
                 case BUNDLED -> throw new ModelException(Kind.UNSUPPORTED, "a bundled model is"
                         + " named, not sent: load the bundled model's own bytes (X3D) instead");
             };
@@ -95,6 +97,27 @@ public final class BodyModels {
         Objects.requireNonNull(assets, "assets");
         Node root = Placeholders.build(rootName(agentName), agentName, assets);
         return new BodyModel(agentName, null, root, new SpatialRig(agentName, root));
+    }
+
+    /** The model file of a zip, its references read from the archive. */
+    private static BodyModel fromArchive(String agentName, ModelArchive archive, AssetManager assets,
+                                         ModelLimits limits) throws ModelException {
+        ModelFormat format = archive.modelFormat();
+        ModelFiles files = ModelFiles.of(archive);
+        byte[] bytes = archive.modelBytes();
+        return switch (format) {
+            case X3D -> fromDescription(agentName, format, X3dParser.parse(bytes, limits, files), assets,
+                    limits);
+            case VRML97 -> fromDescription(agentName, format, VrmlParser.parse(bytes, limits, files),
+                    assets, limits);
+            default -> fromGltf(agentName, format,
+                    GltfImport.load(agentName, format, bytes, files, assets, limits));
+        };
+    }
+
+    /** The colour of agent {@code agentName}: its placeholder's, and its marker's when it is far away. */
+    public static com.jme3.math.ColorRGBA colourOf(String agentName) {
+        return Placeholders.colorFor(agentName);
     }
 
     private static BodyModel fromDescription(String agentName, ModelFormat format,

@@ -41,6 +41,11 @@ public final class ParseBudget {
         }
     }
 
+    /** The limits this budget counts against. */
+    public ModelLimits limits() {
+        return limits;
+    }
+
     /** Enters one level of nesting. */
     public void enter(String where) throws ModelException {
         depth++;

@@ -3,14 +3,11 @@ package io.orchard.viewer.state;
 import com.jme3.app.Application;
 import com.jme3.app.SimpleApplication;
 import com.jme3.app.state.BaseAppState;
-import com.jme3.font.BitmapFont;
-import com.jme3.font.BitmapText;
-import com.jme3.math.ColorRGBA;
 import com.jme3.math.Vector3f;
+import com.jme3.renderer.Camera;
 import com.jme3.renderer.queue.RenderQueue.ShadowMode;
 import com.jme3.scene.Geometry;
 import com.jme3.scene.Node;
-import com.jme3.scene.control.BillboardControl;
 import io.orchard.protocol.value.Rotation;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.viewer.agent.BodyModelLoader;
@@ -56,6 +53,13 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     /** Above this many agents, names are not shown until asked for. */
     public static final int MOST_LABELS = 30;
 
+    /**
+     * Figures that show fewer pixels tall are not drawn: {@link MarkersState} pins them, and a
+     * hundred of them far away would cost a thousand draw calls for a few pixels each.
+     */
+    static final int DRAWN_PX = 12;
+
+
     private final WorldMirror mirror;
     private final SimClock clock;
     private final ModelLimits limits;
@@ -64,7 +68,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     private final Set<String> warned = new HashSet<>();
     private ExecutorService loaders;
     private BodyModelLoader loader;
-    private BitmapFont font;
     private Palette palette;
     private int pending;
     private Boolean labels;
@@ -75,7 +78,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         final Node anchor;
         final Geometry shade;
         BodyModel model;
-        Node label;
 
         Shown(AgentView agent, Palette palette) {
             this.agent = agent;
@@ -98,7 +100,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     @Override
     protected void initialize(Application app) {
         loader = new BodyModelLoader(app.getAssetManager(), limits);
-        font = app.getAssetManager().loadFont("Interface/Fonts/Default.fnt");
         palette = new Palette(app.getAssetManager());
         // Two loaders: a crowd of a hundred models loads in half the time on two cores.
         loaders = Executors.newFixedThreadPool(2, r -> {
@@ -146,10 +147,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         entry.model = loaded.model() != null ? loaded.model()
                 : BodyModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
         entry.anchor.attachChild(entry.model.root());
-        if (!entry.model.isPlaceholder()) {
-            entry.label = label(entry.agent.name());
-            entry.anchor.attachChild(entry.label);
-        }
         pose(entry);
     }
 
@@ -228,23 +225,32 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     @Override
     public void update(float tpf) {
         double now = clock.now();
-        Node.CullHint names = showLabels() ? Node.CullHint.Inherit : Node.CullHint.Always;
         WorldSceneState world = getState(WorldSceneState.class);
         Node.CullHint shades = world != null && world.hasShadows() ? Node.CullHint.Always : Node.CullHint.Inherit;
+        Camera camera = getApplication().getCamera();
         for (Shown entry : shown.values()) {
-            if (entry.model != null) {
-                advance(entry, now);
-            }
             Vec3 feet = entry.agent.positionAt(now);
             entry.shade.setLocalTranslation((float) feet.x(), (float) feet.y() + 0.03f, (float) feet.z());
             entry.shade.setCullHint(shades);
-            if (entry.label != null) {
-                entry.label.setCullHint(names);
-                Vec3 at = entry.agent.positionAt(now);
-                entry.label.setLocalTranslation((float) at.x(), (float) (at.y() + entry.agent.body().height() + 0.45),
-                        (float) at.z());
+            if (entry.model != null) {
+                advance(entry, now);
+                // A figure a few pixels tall is a blur of a dozen draw calls: its pin shows the agent instead.
+                if (shownHeight(camera, feet, entry.agent.body().height()) < DRAWN_PX) {
+                    entry.model.root().setCullHint(Node.CullHint.Always);
+                    entry.shade.setCullHint(Node.CullHint.Always);
+                } else {
+                    entry.model.root().setCullHint(Node.CullHint.Inherit);
+                }
             }
         }
+    }
+
+    /** How many pixels tall a body of {@code height} standing at {@code feet} shows; 0 when behind the camera. */
+    private static float shownHeight(Camera camera, Vec3 feet, double height) {
+        Vector3f low = camera.getScreenCoordinates(new Vector3f((float) feet.x(), (float) feet.y(), (float) feet.z()));
+        Vector3f high = camera.getScreenCoordinates(new Vector3f((float) feet.x(), (float) (feet.y() + height),
+                (float) feet.z()));
+        return low.z > 0 && low.z < 1 ? high.y - low.y : 0;
     }
 
     /** Advances a model; one that fails while animating is replaced by the placeholder, posed anew. */
@@ -256,10 +262,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
                     e.toString());
             mirror.note(LogLine.Kind.PROBLEM, entry.agent.name() + "'s model failed while animating: " + e);
             entry.model.root().removeFromParent();
-            if (entry.label != null) {
-                entry.label.removeFromParent();
-                entry.label = null;
-            }
             entry.model = BodyModels.placeholder(entry.agent.name(), getApplication().getAssetManager());
             entry.anchor.attachChild(entry.model.root());
             pose(entry);
@@ -277,7 +279,7 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
         return entry == null ? null : entry.model;
     }
 
-    /** Shows or hides the agents' names; by default they show when there are at most {@value #MOST_LABELS} agents. */
+    /** Shows or hides the agents' names ({@link MarkersState} draws them); by default they show when there are at most {@value #MOST_LABELS} agents. */
     public void setLabels(boolean visible) {
         labels = visible;
     }
@@ -285,19 +287,6 @@ public final class AgentsState extends BaseAppState implements WorldMirror.Liste
     /** Whether names show. */
     public boolean showLabels() {
         return labels != null ? labels : shown.size() <= MOST_LABELS;
-    }
-
-    private Node label(String name) {
-        BitmapText text = new BitmapText(font);
-        text.setSize(0.32f);
-        text.setColor(ColorRGBA.White);
-        text.setText(name);
-        text.setLocalTranslation(-text.getLineWidth() / 2, text.getLineHeight(), 0);
-        Node node = new Node(name + " name");
-        node.attachChild(text);
-        node.addControl(new BillboardControl());
-        node.setShadowMode(ShadowMode.Off);
-        return node;
     }
 
     private void rotate(AgentView agent, BodyModel model, Rotation rotation) {

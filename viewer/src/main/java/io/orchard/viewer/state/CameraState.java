@@ -56,6 +56,7 @@ public final class CameraState extends BaseAppState implements ActionListener, A
     private final Vector3f fixedLocation;
     private final Vector3f fixedTarget;
     private Camera camera;
+    private float appliedSide;
     private InputManager input;
     private Mode mode = Mode.ORBIT;
     private final Vector3f target = new Vector3f();
@@ -247,6 +248,7 @@ public final class CameraState extends BaseAppState implements ActionListener, A
 
     @Override
     public void update(float tpf) {
+        frameBesideThePanel();
         if (!framed && mirror.hasWorld()) {
             frame(mirror.snapshot().orElseThrow());
             framed = true;
@@ -284,13 +286,34 @@ public final class CameraState extends BaseAppState implements ActionListener, A
         camera.lookAt(target, Vector3f.UNIT_Y);
     }
 
+    /**
+     * Shifts the lens so that the middle of the view is the middle of the screen beside the game
+     * panel, not under it: the world is framed in the space the panel leaves.
+     */
+    private void frameBesideThePanel() {
+        HudState hud = getState(HudState.class);
+        float side = hud == null ? 0 : hud.sideWidth();
+        if (side == appliedSide) {
+            return;
+        }
+        camera.setFrustumPerspective(FIELD_OF_VIEW, (float) camera.getWidth() / camera.getHeight(), NEAR, FAR);
+        float shift = (camera.getFrustumRight() - camera.getFrustumLeft()) * side / 2 / camera.getWidth();
+        camera.setFrustumLeft(camera.getFrustumLeft() - shift);
+        camera.setFrustumRight(camera.getFrustumRight() - shift);
+        camera.update();
+        appliedSide = side;
+    }
+
     /** The whole walkable ground in view, from the south-east; or the fixed view's target. */
     private void frame(WorldSnapshotMessage snapshot) {
         Vector3f centre = Landscape.centre(snapshot.bounds());
         float size = (float) Math.max(snapshot.bounds().maxX() - snapshot.bounds().minX(),
                 snapshot.bounds().maxZ() - snapshot.bounds().minZ());
         target.set(fixedTarget != null ? fixedTarget : centre);
-        distance = fixedTarget != null && fixedLocation == null ? 40 : size * 0.95f;
+        HudState hud = getState(HudState.class);
+        float beside = hud == null ? 0 : hud.sideWidth() / camera.getWidth();
+        // Beside the panel the view is narrower: further back, the whole ground still shows.
+        distance = fixedTarget != null && fixedLocation == null ? 40 : size * 0.95f * (1 + beside);
         if (fixedLocation != null) {
             Vector3f offset = fixedLocation.subtract(target);
             distance = Math.max(2f, offset.length());

@@ -33,11 +33,13 @@ import java.util.function.Supplier;
 public final class HudState extends BaseAppState {
 
     private static final int MOST_SCORES = 12;
-    private static final int MOST_LOG_LINES = 8;
+    private static final int MOST_LOG_LINES = 5;
+    /** The left panel's width, in the text's height: room for a score line. */
+    private static final float SIDE_WIDTH = 19f;
     private static final ColorRGBA PANEL = new ColorRGBA(0f, 0f, 0f, 0.55f);
     private static final ColorRGBA TITLE = new ColorRGBA(1f, 0.9f, 0.55f, 1f);
     private static final String KEYS = "drag: turn   right drag: pan   wheel: zoom   W A S D: move   F: fly\n"
-            + "click: select and follow   V: its view   Enter: instruct   L: names   K: shadows   H: help   Esc: deselect";
+            + "click: select and follow   V: its view   Enter: instruct   L: names   K: shadows   Tab: panel   H: help   Esc: deselect";
     private static final String REPLAY_KEYS = "Space: pause   + -: speed   left/right: -/+10 s   Home: start";
     private static final String LIVE_KEYS = "the operator's: Space: pause/continue the game   G: start it";
 
@@ -52,6 +54,7 @@ public final class HudState extends BaseAppState {
     private Panel agent;
     private Panel keys;
     private boolean helpShown = true;
+    private boolean collapsed;
 
     /**
      * The panels showing the world of {@code mirror} at the time of {@code clock}.
@@ -70,7 +73,7 @@ public final class HudState extends BaseAppState {
     protected void initialize(Application app) {
         font = app.getAssetManager().loadFont("Interface/Fonts/Default.fnt");
         int height = app.getCamera().getHeight();
-        size = Math.max(14f, Math.min(22f, height / 40f));
+        size = Math.max(13f, Math.min(20f, height / 48f));
         Material panel = new Material(app.getAssetManager(), "Common/MatDefs/Misc/Unshaded.j3md");
         panel.setColor("Color", PANEL);
         panel.getAdditionalRenderState().setBlendMode(RenderState.BlendMode.Alpha);
@@ -85,6 +88,19 @@ public final class HudState extends BaseAppState {
         ((SimpleApplication) app).getGuiNode().attachChild(hud);
     }
 
+    /** Folds the left panel to its first two lines (source and time), or unfolds it. */
+    public void toggleCollapsed() {
+        collapsed = !collapsed;
+    }
+
+    /**
+     * The width of the screen's left side the game panel takes, in pixels, for the camera to frame
+     * the world beside it: 0 when the panel is folded or the HUD is off.
+     */
+    public float sideWidth() {
+        return !isEnabled() || collapsed || size == 0 ? 0 : size * (SIDE_WIDTH + 1.2f);
+    }
+
     /** Shows or hides the line of keys. */
     public void toggleHelp() {
         helpShown = !helpShown;
@@ -95,7 +111,12 @@ public final class HudState extends BaseAppState {
         int width = getApplication().getCamera().getWidth();
         int height = getApplication().getCamera().getHeight();
         float margin = size * 0.6f;
-        game.show(gameText(), TITLE, margin, height - margin);
+        String text = gameText();
+        if (collapsed) {
+            String[] lines = text.split("\n", 3);
+            text = lines[0] + (lines.length > 1 ? "\n" + lines[1] : "") + "   (Tab: more)";
+        }
+        game.show(text, TITLE, margin, height - margin);
         String selected = agentText();
         if (selected.isEmpty()) {
             agent.node.setCullHint(Node.CullHint.Always);
@@ -141,7 +162,7 @@ public final class HudState extends BaseAppState {
             text.append("\n\nSaid and done");
             for (LogLine line : log.subList(Math.max(0, log.size() - MOST_LOG_LINES), log.size())) {
                 text.append(String.format(Locale.ROOT, "\n%6.1f  %s%s", line.time(),
-                        line.kind() == LogLine.Kind.PROBLEM ? "! " : "", clip(line.text(), 90)));
+                        line.kind() == LogLine.Kind.PROBLEM ? "! " : "", clip(line.text(), 36)));
             }
         }
         return text.toString();
@@ -258,7 +279,8 @@ public final class HudState extends BaseAppState {
         private void place(float x, float top) {
             float pad = size * 0.4f;
             text.setLocalTranslation(x, top, 1);
-            back.setLocalScale(text.getLineWidth() + 2 * pad, text.getHeight() + 2 * pad, 1);
+            float width = this == game ? Math.max(text.getLineWidth(), size * SIDE_WIDTH) : text.getLineWidth();
+            back.setLocalScale(width + 2 * pad, text.getHeight() + 2 * pad, 1);
             back.setLocalTranslation(x - pad, top - text.getHeight() - pad, 0);
         }
     }

@@ -17,7 +17,7 @@ import com.jme3.input.controls.KeyTrigger;
 public final class KeysState extends BaseAppState implements ActionListener {
 
     private static final double SEEK_STEP = 10;
-    private static final String[] MAPPINGS = {"toggleNames", "toggleHelp", "toggleShadows", "togglePause", "speedUp",
+    private static final String[] MAPPINGS = {"toggleNames", "toggleHud", "toggleHelp", "toggleShadows", "togglePause", "speedUp",
         "slowDown", "seekBack", "seekOn", "seekStart", "startGame"};
 
     private InputManager input;
@@ -27,6 +27,7 @@ public final class KeysState extends BaseAppState implements ActionListener {
         input = app.getInputManager();
         input.addMapping("toggleNames", new KeyTrigger(KeyInput.KEY_L));
         input.addMapping("toggleHelp", new KeyTrigger(KeyInput.KEY_H));
+        input.addMapping("toggleHud", new KeyTrigger(KeyInput.KEY_TAB));
         input.addMapping("toggleShadows", new KeyTrigger(KeyInput.KEY_K));
         input.addMapping("togglePause", new KeyTrigger(KeyInput.KEY_SPACE));
         input.addMapping("speedUp", new KeyTrigger(KeyInput.KEY_EQUALS), new KeyTrigger(KeyInput.KEY_ADD));
@@ -61,6 +62,11 @@ public final class KeysState extends BaseAppState implements ActionListener {
             case "toggleHelp" -> {
                 if (hud != null) {
                     hud.toggleHelp();
+                }
+            }
+            case "toggleHud" -> {
+                if (hud != null) {
+                    hud.toggleCollapsed();
                 }
             }
             default -> {

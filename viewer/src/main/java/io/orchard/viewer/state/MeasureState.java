@@ -1,6 +1,7 @@
 package io.orchard.viewer.state;
 
 import com.jme3.app.Application;
+import com.jme3.renderer.Statistics;
 import com.jme3.app.state.BaseAppState;
 import io.orchard.viewer.world.WorldMirror;
 import java.util.Locale;
@@ -20,6 +21,7 @@ public final class MeasureState extends BaseAppState {
     private final String setting;
     private long started;
     private long frames;
+    private long drawCalls;
     private boolean done;
 
     /**
@@ -52,18 +54,35 @@ public final class MeasureState extends BaseAppState {
             return;
         }
         frames++;
+        drawCalls += lastFrameDrawCalls();
         double elapsed = (now - started) / 1e9;
         if (elapsed >= seconds) {
             done = true;
-            String line = String.format(Locale.ROOT, "%.1f frames per second (%d frames in %.1f s; %s; %d agents)",
-                    frames / elapsed, frames, elapsed, setting, mirror.agents().size());
+            String line = String.format(Locale.ROOT, "%.1f frames per second (%d frames in %.1f s; %s; %d agents;"
+                    + " %d draw calls a frame)", frames / elapsed, frames, elapsed, setting, mirror.agents().size(),
+                    drawCalls / frames);
             control.report(line);
             control.finished(line);
         }
     }
 
+    /** The geometries the last frame drew, one draw call each. */
+    private long lastFrameDrawCalls() {
+        Statistics statistics = getApplication().getRenderer().getStatistics();
+        String[] labels = statistics.getLabels();
+        int[] data = new int[labels.length];
+        statistics.getData(data);
+        for (int i = 0; i < labels.length; i++) {
+            if (labels[i].equals("Objects")) {
+                return data[i];
+            }
+        }
+        return 0;
+    }
+
     @Override
     protected void initialize(Application app) {
+        app.getRenderer().getStatistics().setEnabled(true);
     }
 
     @Override

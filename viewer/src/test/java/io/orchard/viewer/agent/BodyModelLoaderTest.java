@@ -86,15 +86,15 @@ class BodyModelLoaderTest {
 
     @Test
     void aModelWithNothingToDrawGivesAPlaceholderAndSaysWhy() {
-        byte[] proto = ("<X3D><Scene><ProtoDeclare name='Body'><ProtoInterface/><ProtoBody><Shape><Box/></Shape>"
-                + "</ProtoBody></ProtoDeclare><Transform DEF='Guppy'><ProtoInstance name='Body'/>"
+        byte[] proto = ("<X3D><Scene><ExternProtoDeclare name='Body' url='\"https://example.org/body.x3d\"'/>"
+                + "<Transform DEF='Guppy'><ProtoInstance name='Body'/>"
                 + "<Shape><Text string='\"Guppy\"'/></Shape></Transform></Scene></X3D>").getBytes(StandardCharsets.UTF_8);
 
         BodyModelLoader.Loaded loaded = loader.load("Guppy", 1.2, ModelSpec.of(ModelFormat.X3D, proto));
 
         assertThat(loaded.model().isPlaceholder()).isTrue();
         assertThat(loaded.problem()).startsWith("the x3d model has nothing to draw")
-                .contains("PROTO instances are not expanded");
+                .contains("instances of an ExternProtoDeclare");
     }
 
     @Test

@@ -64,8 +64,9 @@ public final class Placeholders {
     }
 
     /** A saturated colour that stays the same for the same name. */
-    static ColorRGBA colorFor(String name) {
-        float hue = (name.hashCode() & 0xffff) / 65536f;
+    public static ColorRGBA colorFor(String name) {
+        // Mixed, so that names that differ in one letter (Agent1, Agent2) get hues far apart.
+        float hue = ((name.hashCode() * 0x9E3779B9) >>> 16) / 65536f;
         int rgb = Color.HSBtoRGB(hue, 0.65f, 0.9f);
         return new ColorRGBA(((rgb >> 16) & 0xff) / 255f, ((rgb >> 8) & 0xff) / 255f,
                 (rgb & 0xff) / 255f, 1f);

@@ -9,6 +9,7 @@ import com.jme3.scene.plugins.gltf.GltfLoader;
 import com.jme3.scene.plugins.gltf.GltfModelKey;
 import io.orchard.protocol.value.ModelFormat;
 import io.orchard.viewer.model.ModelException;
+import io.orchard.viewer.model.ModelFiles;
 import io.orchard.viewer.model.ModelException.Kind;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.ParseBudget;
@@ -34,9 +35,22 @@ public final class GltfImport {
      */
     public static Spatial load(String agentName, ModelFormat format, byte[] bytes,
                                AssetManager assets, ModelLimits limits) throws ModelException {
-        ParseBudget.checkSize(bytes, limits, format.name());
-        GltfGuard.check(format, bytes, limits);
-        byte[] named = GltfNames.named(format, bytes, limits);
+        return load(agentName, format, bytes, ModelFiles.none(), assets, limits);
+    }
+
+    /**
+     * {@link #load(String, ModelFormat, byte[], AssetManager, ModelLimits)} for a glTF whose
+     * buffers and images may be other {@code files} of its zip, which are embedded first.
+     */
+    public static Spatial load(String agentName, ModelFormat format, byte[] file, ModelFiles files,
+                               AssetManager assets, ModelLimits limits) throws ModelException {
+        ParseBudget.checkSize(file, limits, format.name());
+        byte[] bytes = format == ModelFormat.GLTF ? GltfEmbedding.embedded(file, files, limits) : file;
+        // The files were counted unpacked; as data: URIs their Base64 takes a third more.
+        ModelLimits embedded = bytes == file ? limits
+                : limits.withMaxInputBytes((int) Math.min(Integer.MAX_VALUE, limits.maxInputBytes() * 4L / 3 + 4096));
+        GltfGuard.check(format, bytes, embedded);
+        byte[] named = GltfNames.named(format, bytes, embedded);
         String extension = format == ModelFormat.GLB ? ".glb" : ".gltf";
         GltfModelKey key = new GltfModelKey(agentName + extension);
         AssetInfo info = new AssetInfo(assets, key) {

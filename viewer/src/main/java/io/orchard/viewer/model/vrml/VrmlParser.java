@@ -4,6 +4,7 @@ import io.orchard.viewer.model.FieldDef;
 import io.orchard.viewer.model.FieldType;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelException.Kind;
+import io.orchard.viewer.model.ModelFiles;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.NodeKind;
 import io.orchard.viewer.model.NodeSchema;
@@ -44,8 +45,13 @@ public final class VrmlParser {
     private final FieldReader reader;
     private final SceneDescription.Collector scene;
     private final Set<String> warned = new HashSet<>();
+    private final ModelFiles files;
+    private final VrmlProtos protos;
+    private int instancesOpen;
 
-    private VrmlParser(String text, ModelLimits limits) {
+    private VrmlParser(String text, ModelLimits limits, ModelFiles files) {
+        this.files = files;
+        this.protos = new VrmlProtos(limits.maxNodes());
         this.tokens = new VrmlTokenizer(text);
         this.budget = new ParseBudget(limits);
         this.reader = new FieldReader(budget);
@@ -54,6 +60,15 @@ public final class VrmlParser {
 
     /** Parses a VRML97 file, checking it against {@code limits}; the bytes must be UTF-8. */
     public static SceneDescription parse(byte[] bytes, ModelLimits limits) throws ModelException {
+        return parse(bytes, limits, ModelFiles.none());
+    }
+
+    /**
+     * {@link #parse(byte[], ModelLimits)} for a file of a zip: an ImageTexture's url naming another
+     * file of the archive is read from it.
+     */
+    public static SceneDescription parse(byte[] bytes, ModelLimits limits, ModelFiles files)
+            throws ModelException {
         ParseBudget.checkSize(bytes, limits, "VRML97");
         String text = decode(bytes);
         if (text.startsWith("\uFEFF")) {
@@ -68,7 +83,7 @@ public final class VrmlParser {
             throw new ModelException(Kind.MALFORMED, "line 1: a VRML97 file starts with '"
                     + HEADER + "' but this one starts with '" + abbreviate(firstLine) + "'");
         }
-        return new VrmlParser(text, limits).scene();
+        return new VrmlParser(text, limits, files).scene();
     }
 
     private SceneDescription scene() throws ModelException {
@@ -92,7 +107,7 @@ public final class VrmlParser {
         if (token.isIdent("ROUTE")) {
             route();
         } else if (token.isIdent("PROTO")) {
-            skipProto();
+            protos.declare(tokens);
         } else if (token.isIdent("EXTERNPROTO")) {
             skipExternProto();
         } else {
@@ -129,7 +144,20 @@ public final class VrmlParser {
                     + ": expected a node (a type name and '{') but found " + found.quoted()
                     + (typeToken.is(Type.IDENT) ? " after '" + typeToken.text() + "'" : ""));
         }
+        if (protos.declares(typeToken.text())) {
+            if (++instancesOpen > VrmlProtos.MAX_NESTING) {
+                throw new ModelException(Kind.TOO_LARGE, typeToken.location() + ": PROTO instances nest deeper than "
+                        + VrmlProtos.MAX_NESTING + " (does a PROTO instantiate itself?)");
+            }
+            try {
+                protos.expand(typeToken, defName, tokens);
+                return nodeStatement();
+            } finally {
+                instancesOpen--;
+            }
+        }
         String where = typeToken.location();
+        protos.isExtern(typeToken.text(), where);
         budget.enter(where + ": " + typeToken.text());
         budget.addNodes(1, where + ": " + typeToken.text());
         tokens.next();
@@ -185,6 +213,11 @@ public final class VrmlParser {
             node.set(def.name(), child);
         } else if (def.type() == FieldType.MFNODE) {
             node.set(def.name(), nodeList(node, def));
+        } else if (node.is("ImageTexture") && def.name().equals("url")) {
+            List<String> urls = ((List<?>) reader.readVrml(tokens, def, node)).stream()
+                    .map(String::valueOf).toList();
+            node.set(def.name(), files.embedded(urls, name.location() + ": " + node.label()
+                    + " field url"));
         } else {
             node.set(def.name(), reader.readVrml(tokens, def, node));
         }
@@ -335,20 +368,12 @@ public final class VrmlParser {
         }
     }
 
-    private void skipProto() throws ModelException {
-        Token start = tokens.next();
-        String name = identifier("a name after PROTO");
-        LOG.warn("{}: PROTO {} is not supported; its instances are ignored", start.location(),
-                name);
-        skipBalanced(Type.OPEN_BRACKET, start);
-        skipBalanced(Type.OPEN_BRACE, start);
-    }
-
     private void skipExternProto() throws ModelException {
         Token start = tokens.next();
         String name = identifier("a name after EXTERNPROTO");
-        LOG.warn("{}: EXTERNPROTO {} is not supported (and never fetched); its instances are"
-                + " ignored", start.location(), name);
+        LOG.warn("{}: EXTERNPROTO {} is refused: its prototype is in another file, never fetched; its"
+                + " instances are not drawn", start.location(), name);
+        protos.extern(name, start.location());
         skipBalanced(Type.OPEN_BRACKET, start);
         if (tokens.peek().is(Type.OPEN_BRACKET)) {
             skipBalanced(Type.OPEN_BRACKET, start);

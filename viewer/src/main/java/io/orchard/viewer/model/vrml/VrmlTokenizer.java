@@ -89,6 +89,11 @@ final class VrmlTokenizer {
         return lookahead.remove(0);
     }
 
+    /** Puts {@code tokens} before the next one, to be read next: a prototype's body in its instance's place. */
+    void insert(List<Token> tokens) {
+        lookahead.addAll(0, tokens);
+    }
+
     /** The current location, for messages about the end of the input. */
     String location() {
         return fixedLocation != null ? fixedLocation : "line " + line + ":" + column;

@@ -4,6 +4,7 @@ import io.orchard.viewer.model.FieldDef;
 import io.orchard.viewer.model.FieldType;
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelException.Kind;
+import io.orchard.viewer.model.ModelFiles;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.NodeKind;
 import io.orchard.viewer.model.NodeSchema;
@@ -53,34 +54,60 @@ public final class X3dParser {
                          Map<String, List<SceneNode>> lists) {
     }
 
-    private final XMLStreamReader xml;
+    private XmlElement element;
     private final ParseBudget budget;
     private final FieldReader reader;
     private final SceneDescription.Collector scene;
     private final Deque<Frame> stack = new ArrayDeque<>();
     private final List<SceneNode> roots = new ArrayList<>();
-    private final Set<String> warned = new HashSet<>();
+    private final Set<String> warned;
+    private final ModelFiles files;
+    private final String file;
 
-    private X3dParser(XMLStreamReader xml, ModelLimits limits) {
-        this.xml = xml;
-        this.budget = new ParseBudget(limits);
+    private X3dParser(ParseBudget budget, SceneDescription.Collector scene,
+                      ModelFiles files, String file, Set<String> warned) {
+        this.budget = budget;
         this.reader = new FieldReader(budget);
-        this.scene = new SceneDescription.Collector(budget);
+        this.scene = scene;
+        this.files = files;
+        this.file = file;
+        this.warned = warned;
     }
 
     /** Parses an X3D XML file, checking it against {@code limits}. */
     public static SceneDescription parse(byte[] bytes, ModelLimits limits) throws ModelException {
+        return parse(bytes, limits, ModelFiles.none());
+    }
+
+    /**
+     * {@link #parse(byte[], ModelLimits)} for a file of a zip: an ImageTexture's url naming another
+     * file of the archive is read from it, and an {@code Inline} of an X3D file of the archive
+     * becomes a Group of that file's nodes, whose DEF names and ROUTEs join the model's.
+     */
+    public static SceneDescription parse(byte[] bytes, ModelLimits limits, ModelFiles files)
+            throws ModelException {
         ParseBudget.checkSize(bytes, limits, "X3D");
+        ParseBudget budget = new ParseBudget(limits);
+        SceneDescription.Collector scene = new SceneDescription.Collector(budget);
+        List<SceneNode> roots = read(bytes, budget, scene, files, null, new HashSet<>());
+        return scene.finish(roots);
+    }
+
+    private static List<SceneNode> read(byte[] bytes, ParseBudget budget,
+                                        SceneDescription.Collector scene, ModelFiles files,
+                                        String file, Set<String> warned) throws ModelException {
         XMLStreamReader xml = null;
+        String what = file == null ? "X3D" : "X3D file '" + file + "'";
+        XmlElement root;
         try {
             xml = factory().createXMLStreamReader(new ByteArrayInputStream(bytes));
-            return new X3dParser(xml, limits).document();
+            root = tree(xml, file, budget.limits().maxDepth() + 2);
         } catch (XMLStreamException e) {
-            throw new ModelException(Kind.MALFORMED, "X3D is not well-formed XML: "
+            throw new ModelException(Kind.MALFORMED, what + " is not well-formed XML: "
                     + oneLine(e.getMessage()), e);
         } catch (RuntimeException e) {
             // The JDK parser reports some malformed input as unchecked exceptions.
-            throw new ModelException(Kind.MALFORMED, "X3D could not be read: " + e, e);
+            throw new ModelException(Kind.MALFORMED, what + " could not be read: " + e, e);
         } finally {
             if (xml != null) {
                 try {
@@ -90,6 +117,77 @@ public final class X3dParser {
                 }
             }
         }
+        X3dProtos.expand(root, budget.limits());
+        X3dParser parser = new X3dParser(budget, scene, files, file, warned);
+        parser.stack.push(new Frame(FrameKind.SKIP, null, null, root.location(), null));
+        for (XmlElement child : root.children()) {
+            parser.walk(child);
+        }
+        return parser.roots;
+    }
+
+    /** Visits an element and everything below it, as the events of a stream would. */
+    private void walk(XmlElement at) throws ModelException {
+        element = at;
+        if (start()) {
+            for (XmlElement child : at.children()) {
+                walk(child);
+            }
+        }
+        element = at;
+        end();
+    }
+
+    /**
+     * Reads the document into elements, refusing entities and elements nested deeper than
+     * {@code maxDepth}.
+     */
+    private static XmlElement tree(XMLStreamReader xml, String file, int maxDepth)
+            throws XMLStreamException, ModelException {
+        Deque<XmlElement> open = new ArrayDeque<>();
+        XmlElement root = null;
+        while (xml.hasNext()) {
+            int event = xml.next();
+            switch (event) {
+                case XMLStreamConstants.DTD -> checkDoctype(xml, file);
+                case XMLStreamConstants.ENTITY_REFERENCE -> throw new ModelException(Kind.UNSAFE,
+                        where(xml, file) + ": entity reference &" + xml.getLocalName()
+                                + "; refused (X3D models may not use entities)");
+                case XMLStreamConstants.START_ELEMENT -> {
+                    Map<String, String> attributes = new LinkedHashMap<>();
+                    for (int i = 0; i < xml.getAttributeCount(); i++) {
+                        String prefix = xml.getAttributePrefix(i);
+                        if (prefix == null || prefix.isEmpty()) {
+                            attributes.put(xml.getAttributeLocalName(i), xml.getAttributeValue(i));
+                        }
+                    }
+                    XmlElement element = new XmlElement(xml.getLocalName(), attributes,
+                            where(xml, file));
+                    if (root == null) {
+                        if (!element.name().equals("X3D")) {
+                            throw new ModelException(Kind.MALFORMED, element.location()
+                                    + ": an X3D document's root element is <X3D>, not <"
+                                    + element.name() + ">");
+                        }
+                        root = element;
+                    } else {
+                        if (open.size() > maxDepth) {
+                            throw new ModelException(Kind.TOO_LARGE, element.location() + ": <"
+                                    + element.name() + ">: nesting deeper than " + (maxDepth - 2)
+                                    + " levels");
+                        }
+                        open.peek().children().add(element);
+                    }
+                    open.push(element);
+                }
+                case XMLStreamConstants.END_ELEMENT -> open.pop();
+                default -> { }
+            }
+        }
+        if (root == null) {
+            throw new ModelException(Kind.MALFORMED, "X3D document has no root element");
+        }
+        return root;
     }
 
     private static XMLInputFactory factory() {
@@ -105,60 +203,29 @@ public final class X3dParser {
         return factory;
     }
 
-    private SceneDescription document() throws XMLStreamException, ModelException {
-        boolean sawRoot = false;
-        while (xml.hasNext()) {
-            int event = xml.next();
-            switch (event) {
-                case XMLStreamConstants.DTD -> checkDoctype();
-                case XMLStreamConstants.ENTITY_REFERENCE -> throw new ModelException(Kind.UNSAFE,
-                        where() + ": entity reference &" + xml.getLocalName()
-                                + "; refused (X3D models may not use entities)");
-                case XMLStreamConstants.START_ELEMENT -> {
-                    if (!sawRoot) {
-                        sawRoot = true;
-                        if (!xml.getLocalName().equals("X3D")) {
-                            throw new ModelException(Kind.MALFORMED, where()
-                                    + ": an X3D document's root element is <X3D>, not <"
-                                    + xml.getLocalName() + ">");
-                        }
-                        stack.push(new Frame(FrameKind.SKIP, null, null, where(), null));
-                    } else {
-                        start();
-                    }
-                }
-                case XMLStreamConstants.END_ELEMENT -> end();
-                default -> { }
-            }
-        }
-        if (!sawRoot) {
-            throw new ModelException(Kind.MALFORMED, "X3D document has no root element");
-        }
-        return scene.finish(roots);
-    }
-
-    private void checkDoctype() throws ModelException {
+    private static void checkDoctype(XMLStreamReader xml, String file) throws ModelException {
         String doctype = xml.getText();
         if (doctype != null && doctype.contains("<!ENTITY")) {
-            throw new ModelException(Kind.UNSAFE, where() + ": the DOCTYPE declares entities;"
-                    + " entity declarations are refused (external entities and entity"
+            throw new ModelException(Kind.UNSAFE, where(xml, file) + ": the DOCTYPE declares"
+                    + " entities; entity declarations are refused (external entities and entity"
                     + " expansion are never processed)");
         }
     }
 
-    private void start() throws ModelException {
-        String name = xml.getLocalName();
+    /** Opens the current element; false when its children are not to be visited. */
+    private boolean start() throws ModelException {
+        String name = element.name();
         String location = where();
         Frame parent = stack.peek();
         boolean topLevel = stack.size() == 1;
         if (topLevel && name.equals("Scene")) {
             stack.push(new Frame(FrameKind.SCENE, null, null, location, null));
-            return;
+            return true;
         }
         budget.enter(location + ": <" + name + ">");
         if (topLevel || parent.kind() == FrameKind.SKIP || parent.kind() == FrameKind.ROUTE) {
             stack.push(skip(location));
-            return;
+            return true;
         }
         if (parent.kind() == FrameKind.USE) {
             throw new ModelException(Kind.MALFORMED, location + ": <" + name + "> inside a USE"
@@ -168,18 +235,22 @@ public final class X3dParser {
             scene.route(new SceneDescription.Route(required("fromNode"), required("fromField"),
                     required("toNode"), required("toField"), location));
             stack.push(new Frame(FrameKind.ROUTE, null, null, location, null));
-            return;
+            return true;
         }
         if (SKIPPED.contains(name)) {
             if (warned.add(name)) {
                 LOG.warn("{}: <{}> is not supported; it is ignored", location, name);
             }
             stack.push(skip(location));
-            return;
+            return true;
         }
         String container = attribute("containerField");
         if (container == null) {
             container = NodeSchema.defaultContainerField(name);
+        }
+        if (name.equals("Inline") && files.any() && attribute("USE") == null) {
+            inline(container, location);
+            return false;
         }
         String use = attribute("USE");
         if (use != null) {
@@ -193,7 +264,7 @@ public final class X3dParser {
                         + use + "'> names " + node.label() + ", not a " + name);
             }
             stack.push(new Frame(FrameKind.USE, node, container, location, null));
-            return;
+            return true;
         }
         budget.addNodes(1, location + ": <" + name + ">");
         SceneNode node = new SceneNode(name, location);
@@ -201,16 +272,45 @@ public final class X3dParser {
         if (def != null) {
             node.setDefName(def);
         }
-        for (int i = 0; i < xml.getAttributeCount(); i++) {
-            String prefix = xml.getAttributePrefix(i);
-            String attribute = xml.getAttributeLocalName(i);
-            if ((prefix != null && !prefix.isEmpty()) || NON_FIELD_ATTRIBUTES.contains(attribute)) {
-                continue;
+        for (Map.Entry<String, String> attribute : element.attributes().entrySet()) {
+            if (!NON_FIELD_ATTRIBUTES.contains(attribute.getKey())) {
+                fieldAttribute(node, attribute.getKey(), attribute.getValue(), location);
             }
-            fieldAttribute(node, attribute, xml.getAttributeValue(i), location);
         }
         stack.push(new Frame(FrameKind.NODE, node, container, location,
                 new LinkedHashMap<>()));
+        return true;
+    }
+
+    /** An Inline of a file of the same zip: a Group holding that file's nodes. */
+    private void inline(String container, String location) throws ModelException {
+        budget.addNodes(1, location + ": <Inline>");
+        SceneNode group = new SceneNode("Group", location);
+        String def = attribute("DEF");
+        if (def != null) {
+            group.setDefName(def);
+        }
+        List<String> urls = new ArrayList<>();
+        String url = attribute("url");
+        if (url != null) {
+            java.util.regex.Matcher quoted = java.util.regex.Pattern.compile("\"([^\"]*)\"").matcher(url);
+            while (quoted.find()) {
+                urls.add(quoted.group(1));
+            }
+            if (urls.isEmpty() && !url.isBlank()) {
+                urls.add(url.strip());
+            }
+        }
+        ModelFiles.Inlined inlined = files.inline(urls, location + ": <Inline>");
+        if (inlined.format() != io.orchard.protocol.value.ModelFormat.X3D) {
+            throw new ModelException(Kind.UNSUPPORTED, location + ": <Inline> of '"
+                    + inlined.path() + "': an X3D file inlines X3D files only");
+        }
+        List<SceneNode> children = read(inlined.bytes(), budget, scene, inlined.files(),
+                inlined.path(), warned);
+        Map<String, List<SceneNode>> lists = new LinkedHashMap<>();
+        lists.put("children", new ArrayList<>(children));
+        stack.push(new Frame(FrameKind.NODE, group, container, location, lists));
     }
 
     private void fieldAttribute(SceneNode node, String name, String value, String location)
@@ -231,7 +331,12 @@ public final class X3dParser {
                     + name + " cannot be given as an attribute value ('" + abbreviate(value)
                     + "')");
         }
-        node.set(name, reader.readAttribute(value, def, node, location));
+        Object read = reader.readAttribute(value, def, node, location);
+        if (node.is("ImageTexture") && name.equals("url") && read instanceof List<?> urls) {
+            read = files.embedded(urls.stream().map(String::valueOf).toList(), location + ": "
+                    + node.label() + " field url");
+        }
+        node.set(name, read);
     }
 
     private void end() throws ModelException {
@@ -303,7 +408,7 @@ public final class X3dParser {
     }
 
     private String attribute(String name) {
-        return xml.getAttributeValue(null, name);
+        return element.attribute(name);
     }
 
     private String required(String name) throws ModelException {
@@ -316,8 +421,12 @@ public final class X3dParser {
     }
 
     private String where() {
+        return element.location();
+    }
+
+    private static String where(XMLStreamReader xml, String file) {
         Location location = xml.getLocation();
-        return "line " + location.getLineNumber() + ":" + location.getColumnNumber();
+        return (file == null ? "" : file + " ") + "line " + location.getLineNumber() + ":" + location.getColumnNumber();
     }
 
     private static String oneLine(String message) {

@@ -1,11 +1,14 @@
 package io.orchard.viewer.model.vrml;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import io.orchard.viewer.model.ModelException;
 import io.orchard.viewer.model.ModelLimits;
 import io.orchard.viewer.model.SceneDescription;
+import io.orchard.viewer.model.SceneNode;
 import io.orchard.viewer.model.TestModels;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** What the VRML97 parser reads beyond what both encodings share (see SceneParsingTest). */
@@ -47,19 +50,37 @@ class VrmlParsingTest {
     }
 
     @Test
-    void protoDeclarationsAreSkippedAndTheirInstancesKeptAsUnknownNodes()
-            throws ModelException {
+    void protoInstancesAreExpandedWithTheirValuesAndDefaultsUnderTheirOwnNames() throws ModelException {
         SceneDescription scene = VrmlParser.parse(TestModels.vrml("""
-                PROTO Leg [ field SFVec3f size 1 1 1 exposedField MFNode kids [] ] {
-                  Transform { children [ Shape { geometry Box { size IS size } } ] }
+                PROTO Leg [ field SFVec3f size 1 1 1 exposedField MFNode kids [] eventIn SFFloat bend ] {
+                  DEF Hip Transform { set_scale IS bend children [ DEF Knee Transform { children IS kids }
+                    Shape { geometry Box { size IS size } } ] }
+                  DEF Swing TimeSensor { }
                 }
                 EXTERNPROTO Arm [ field SFFloat length ] [ "http://127.0.0.1:9/arm.wrl" ]
-                DEF Left Leg { size 1 2 1 }
-                DEF Body Group { children [ USE Left ] }
+                DEF Left Leg { size 1 2 1 kids [ DEF Foot Shape { geometry Sphere { } } ] }
+                DEF Body Group { children [ USE Left Leg { } Arm { length 2 } ] }
                 """), ModelLimits.DEFAULTS);
 
-        assertThat(scene.defs().get("Left").isKnown()).isFalse();
-        assertThat(scene.defs().get("Body").nodes("children")).hasSize(1);
+        SceneNode left = scene.defs().get("Left");
+        assertThat(left.typeName()).isEqualTo("Transform");
+        assertThat(left.nodes("children").get(1).node("geometry").floats("size")).containsExactly(1, 2, 1);
+        assertThat(scene.defs().get("Left.Knee").nodes("children")).extracting(SceneNode::typeName)
+                .containsExactly("Shape");
+        assertThat(scene.defs()).containsKeys("Foot", "Leg#2.Hip", "Leg#2.Knee").doesNotContainKeys("Hip", "Knee");
+        assertThat(scene.defs().get("Leg#2.Hip").nodes("children").get(1).node("geometry").floats("size"))
+                .containsExactly(1, 1, 1);
+        List<SceneNode> body = scene.defs().get("Body").nodes("children");
+        assertThat(body).hasSize(3);
+        assertThat(body.get(0)).isSameAs(left);
+        assertThat(body.get(2).isKnown()).as("the EXTERNPROTO's instance").isFalse();
+    }
+
+    @Test
+    void aProtoThatInstantiatesItselfIsRefused() {
+        assertThatThrownBy(() -> VrmlParser.parse(TestModels.vrml("PROTO Loop [ ] { Loop { } } Loop { }"),
+                ModelLimits.DEFAULTS)).isInstanceOf(ModelException.class)
+                .hasMessageContaining("PROTO instances nest deeper than 16");
     }
 
     @Test

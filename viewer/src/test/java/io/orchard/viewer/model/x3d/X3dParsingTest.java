@@ -26,7 +26,7 @@ class X3dParsingTest {
     }
 
     @Test
-    void protoDeclarationsAndTheirDefNamesAreSkipped() throws ModelException {
+    void aProtoInstanceIsItsBodysFirstNodeUnderTheInstancesName() throws ModelException {
         SceneDescription scene = X3dParser.parse(TestModels.x3d("""
                 <ProtoDeclare name="Leg"><ProtoBody><Transform DEF="Inside"/></ProtoBody>
                 </ProtoDeclare>
@@ -36,6 +36,7 @@ class X3dParsingTest {
                 """), ModelLimits.DEFAULTS);
 
         assertThat(scene.defs()).containsKeys("Body", "Left").doesNotContainKey("Inside");
+        assertThat(scene.defs().get("Left").typeName()).isEqualTo("Transform");
     }
 
     @Test
