@@ -46,6 +46,8 @@ class NodeLostTest {
     private static final Pattern ROLLED_BACK = Pattern.compile("was lost: the game goes on from its checkpoint of tick "
             + "(\\d+)");
     private static final Pattern PARCELS = Pattern.compile("parcels \\d+ \\[(.*)]");
+    /** A health line of a node that hosts parcels. */
+    private static final Pattern HOSTING = Pattern.compile("^node .* parcels [1-9]\\d* \\[");
     private static final MessageCodec CODEC = new MessageCodec();
     private static final JsonMapper JSON = JsonMapper.builder().build();
 
@@ -78,6 +80,7 @@ class NodeLostTest {
                     }
                 }
                 awaitFruitEatenAndCheckpoint(checkpoint);
+                third.await(HOSTING, 60); // its health line names parcels: on a quick machine, not yet the first
                 Set<String> hosted = lastParcels(third);
                 third.process().destroyForcibly();
                 third.process().waitFor(60, TimeUnit.SECONDS);
