@@ -35,3 +35,10 @@ dependencies {
 configurations.all {
     exclude(group = "org.lmdbjava", module = "lmdbjava")
 }
+
+// The heaviest tests run only with -PclusterFull, as Maven's cluster-full profile (docs/scaling.md).
+tasks.withType<Test>().configureEach {
+    if (!project.hasProperty("clusterFull")) {
+        exclude("**/NodeProcessesTest*", "**/ClusterNodesTest*", "**/ShardedGameTest*")
+    }
+}
