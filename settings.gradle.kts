@@ -11,4 +11,4 @@ dependencyResolutionManagement {
     }
 }
 
-include("protocol", "cli", "server", "agents", "viewer", "web", "bom", "examples")
+include("protocol", "cli", "server", "agents", "viewer", "web", "cluster", "bom", "examples")

@@ -18,6 +18,7 @@ dependencies {
         api(project(":agents"))
         api(project(":viewer"))
         api(project(":web"))
+        api(project(":cluster"))
     }
 }
 

@@ -14,6 +14,7 @@ dependencies {
     implementation(project(":server"))
     implementation(project(":agents"))
     implementation(project(":viewer"))
+    implementation(project(":cluster"))
     // The server's browser viewer, found on the class path when a page is asked for.
     runtimeOnly(project(":web"))
     implementation(libs.slf4j.api)

@@ -4,7 +4,7 @@
 
 // The BOMs the root pom.xml imports in its <dependencyManagement>, by their version catalog alias:
 // each library family resolves to one version in every module, as under Maven.
-val boms = listOf("jackson-bom", "netty-bom", "lwjgl-bom", "slf4j-bom", "junit-bom", "assertj-bom")
+val boms = listOf("jackson-bom", "netty-bom", "lwjgl-bom", "pekko-bom", "slf4j-bom", "junit-bom", "assertj-bom")
 
 val catalog = extensions.getByType<VersionCatalogsExtension>().named("libs")
 dependencies {

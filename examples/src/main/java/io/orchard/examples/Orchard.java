@@ -1,6 +1,7 @@
 package io.orchard.examples;
 
 import io.orchard.agents.cli.AgentMain;
+import io.orchard.cluster.NodeMain;
 import io.orchard.examples.demo.DemoCommand;
 import io.orchard.examples.embedded.EmbeddedCommand;
 import io.orchard.examples.firstagent.FirstAgentCommand;
@@ -87,6 +88,7 @@ public final class Orchard implements Callable<Integer> {
         return List.of(
                 new CommandLine(new DemoCommand(out, err)),
                 ServerMain.command(console, out, err),
+                NodeMain.command(console, out, err),
                 ViewerMain.command(out, err),
                 AgentMain.agentCommand(console, out, err),
                 AgentMain.agentsCommand(console, out, err),

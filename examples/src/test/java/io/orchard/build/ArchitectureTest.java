@@ -20,9 +20,9 @@ import org.junit.jupiter.api.Test;
  * The directions the modules and packages depend in, read from the compiled classes of every
  * module: protocol and cli (the command lines' shared converters and errors) under everything,
  * knowing nothing of each other; server, agents and viewer beside each other, the web viewer on the
- * server, examples on top; Netty only in the server's network and the web viewer's HTTP side, JTS
- * only in the server's world, jMonkeyEngine only in the viewer; no cycle between packages, and none
- * between the classes of the server's simulation.
+ * server, the cluster on the server, examples on top; Netty only in the server's network and the web
+ * viewer's HTTP side, JTS only in the server's world, jMonkeyEngine only in the viewer, Pekko only in
+ * the cluster; no cycle between packages, and none between the classes of the server's simulation.
  */
 class ArchitectureTest {
 
@@ -46,7 +46,8 @@ class ArchitectureTest {
         void protocolDependsOnNoOtherModule() {
             check(noClasses().that().resideInAPackage("io.orchard.protocol..")
                     .should().dependOnClassesThat().resideInAnyPackage("io.orchard.cli..", "io.orchard.server..",
-                            "io.orchard.agents..", "io.orchard.viewer..", "io.orchard.examples.."));
+                            "io.orchard.agents..", "io.orchard.viewer..", "io.orchard.cluster..",
+                            "io.orchard.examples.."));
         }
 
         @Test
@@ -121,6 +122,25 @@ class ArchitectureTest {
                             "io.orchard.examples..", "org.locationtech..", "com.jme3.."));
             check(noClasses().that().resideOutsideOfPackage("io.orchard.web")
                     .should().dependOnClassesThat().resideInAPackage("io.orchard.web"));
+        }
+
+        /**
+         * The cluster runs the server's rules for parcels of one world and the server's front end
+         * on each node: it sits on the server and the protocol, and nothing but the launcher knows it.
+         */
+        @Test
+        void theClusterSitsOnTheServerAndNothingKnowsIt() {
+            check(noClasses().that().resideInAPackage("io.orchard.cluster..")
+                    .should().dependOnClassesThat().resideInAnyPackage("io.orchard.agents..", "io.orchard.viewer..",
+                            "io.orchard.web..", "io.orchard.examples..", "com.jme3.."));
+            check(noClasses().that().resideOutsideOfPackages("io.orchard.cluster..", "io.orchard.examples..")
+                    .should().dependOnClassesThat().resideInAPackage("io.orchard.cluster.."));
+        }
+
+        @Test
+        void pekkoOnlyInTheCluster() {
+            check(noClasses().that().resideOutsideOfPackage("io.orchard.cluster..")
+                    .should().dependOnClassesThat().resideInAnyPackage("org.apache.pekko..", "scala.."));
         }
 
         @Test

@@ -42,7 +42,10 @@ final class BuildChecks {
             entry("xchart", "xchart.version"),
             entry("picocli", "picocli.version"),
             entry("archunit", "archunit.version"),
-            entry("json-schema-validator", "json-schema-validator.version"));
+            entry("json-schema-validator", "json-schema-validator.version"),
+            entry("pekko", "pekko.version"),
+            entry("scala", "scala.version"),
+            entry("typesafe-config", "typesafe-config.version"));
 
     /** Root pom properties ending in this hold library versions. */
     private static final String VERSION_SUFFIX = ".version";

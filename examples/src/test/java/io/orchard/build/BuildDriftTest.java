@@ -291,7 +291,8 @@ class BuildDriftTest {
 
             assertThat(drifts).extracting(Drift::item)
                     .containsExactlyInAnyOrder("agents pom licence", "bom pom licence", "cli pom licence",
-                            "protocol pom licence", "server pom licence", "viewer pom licence", "web pom licence");
+                            "cluster pom licence", "protocol pom licence", "server pom licence", "viewer pom licence",
+                            "web pom licence");
             assertThat(drifts).extracting(Drift::gradle).allMatch(licence -> licence.startsWith("MIT "));
         }
 
@@ -310,8 +311,8 @@ class BuildDriftTest {
             Check check = dir -> BuildChecks.moduleSettings(MavenBuild.read(dir), GradleBuild.read(dir));
 
             assertThat(driftsAfterEdit(check, "bom/build.gradle.kts", "        api(project(\":viewer\"))\n", ""))
-                    .containsExactly(new Drift("bom managed modules", "agents, cli, protocol, server, viewer, web",
-                            "agents, cli, protocol, server, web"));
+                    .containsExactly(new Drift("bom managed modules", "agents, cli, cluster, protocol, server, viewer, web",
+                            "agents, cli, cluster, protocol, server, web"));
         }
 
         @Test

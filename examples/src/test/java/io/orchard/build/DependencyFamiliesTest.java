@@ -26,6 +26,12 @@ class DependencyFamiliesTest {
             "tools.jackson", "Jackson 3",
             "io.netty", "Netty");
 
+    /**
+     * Groups that hold separate libraries, each released on its own and versioned alone: each of
+     * their artifacts is a family of its own (Typesafe's Config and ssl-config, which Pekko brings).
+     */
+    private static final Set<String> GROUPS_OF_SEPARATE_LIBRARIES = Set.of("com.typesafe");
+
     /** The families the class path surely holds, so the check is known to see them. */
     private static final List<String> SURELY_PRESENT = List.of("Jackson 3", "Netty", "org.lwjgl",
             "org.jmonkeyengine", "org.slf4j", "org.junit.jupiter");
@@ -37,6 +43,15 @@ class DependencyFamiliesTest {
         assertThat(versions).as("families on the test class path").containsKeys(SURELY_PRESENT.toArray(String[]::new));
         assertThat(versions).as("families with more than one version on the test class path: %s", versions)
                 .allSatisfy((family, found) -> assertThat(found).as(family).hasSize(1));
+    }
+
+    @Test
+    void separateLibrariesOfOneGroupAreFamiliesOfTheirOwn() {
+        List<Jar> jars = List.of(new Jar("com.typesafe", "config", "1.4.9"),
+                new Jar("com.typesafe", "ssl-config-core_2.13", "0.7.1"));
+
+        assertThat(versionsByFamily(jars)).containsEntry("com.typesafe:config", Set.of("1.4.9"))
+                .containsEntry("com.typesafe:ssl-config-core_2.13", Set.of("0.7.1"));
     }
 
     @Test
@@ -55,7 +70,10 @@ class DependencyFamiliesTest {
         return ResolvedClasspath.of(System.getProperty("java.class.path", "")).jars(repository);
     }
 
-    /** The versions of each family among {@code jars}: a family is a group, or groups sharing a prefix. */
+    /**
+     * The versions of each family among {@code jars}: a family is a group, or groups sharing a prefix,
+     * or an artifact of a group of separate libraries.
+     */
     static Map<String, Set<String>> versionsByFamily(List<Jar> jars) {
         Map<String, Set<String>> versions = new TreeMap<>();
         for (Jar jar : jars) {
@@ -63,7 +81,8 @@ class DependencyFamiliesTest {
                     .filter(prefix -> jar.group().equals(prefix.getKey()) || jar.group().startsWith(prefix.getKey() + "."))
                     .map(Map.Entry::getValue)
                     .findFirst()
-                    .orElse(jar.group());
+                    .orElse(GROUPS_OF_SEPARATE_LIBRARIES.contains(jar.group()) ? jar.group() + ":" + jar.artifact()
+                            : jar.group());
             versions.computeIfAbsent(family, f -> new TreeSet<>()).add(jar.version());
         }
         return versions;

@@ -18,7 +18,7 @@ import org.slf4j.LoggerFactory;
  * a big world takes tens of milliseconds to write: those are {@linkplain #offer offered} instead,
  * and only the newest one is written, at most every {@link #MIN_INTERVAL_MILLIS} ms.
  */
-final class Checkpoints implements AutoCloseable {
+public final class Checkpoints implements AutoCloseable {
 
     private static final Logger log = LoggerFactory.getLogger(Checkpoints.class);
 
@@ -38,24 +38,28 @@ final class Checkpoints implements AutoCloseable {
                 return writer;
             });
 
-    /** @param file the server's checkpoint file, or null when it has none */
-    Checkpoints(Path file) {
+    /**
+     * A writer of checkpoints to {@code file}, the game's checkpoint file, or to none (null): then
+     * only checkpoints written to a file named with them are.
+     */
+    public Checkpoints(Path file) {
         this.file = file;
         this.lastOfferWritten = System.nanoTime() - MIN_INTERVAL_MILLIS * 1_000_000;
     }
 
-    Path file() {
+    /** The game's checkpoint file, or null. */
+    public Path file() {
         return file;
     }
 
     /** Runs {@code request} every {@code interval}, from one interval from now. */
-    void every(Duration interval, Runnable request) {
+    public void every(Duration interval, Runnable request) {
         long millis = interval.toMillis();
         thread.scheduleAtFixedRate(request, millis, millis, TimeUnit.MILLISECONDS);
     }
 
     /** Writes the checkpoint to {@code to}, then completes {@code done} (if any) with the file or the failure. */
-    void write(Checkpoint checkpoint, Path to, CompletableFuture<Path> done) {
+    public void write(Checkpoint checkpoint, Path to, CompletableFuture<Path> done) {
         try {
             thread.execute(() -> writeNow(checkpoint, to, done));
         } catch (java.util.concurrent.RejectedExecutionException e) {
@@ -84,7 +88,7 @@ final class Checkpoints implements AutoCloseable {
      * Writes {@code checkpoint} to the server's file soon, unless a newer one is offered before it is
      * written: then only the newer one is.
      */
-    void offer(Checkpoint checkpoint) {
+    public void offer(Checkpoint checkpoint) {
         newest.set(checkpoint);
         if (offerScheduled.compareAndSet(false, true)) {
             long wait = Math.max(0, lastOfferWritten + MIN_INTERVAL_MILLIS * 1_000_000 - System.nanoTime());

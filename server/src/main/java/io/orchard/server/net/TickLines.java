@@ -4,6 +4,10 @@ import io.netty.buffer.ByteBuf;
 import io.netty.util.concurrent.FastThreadLocal;
 import io.orchard.protocol.MessageCodec;
 import io.orchard.protocol.message.AgentAddedMessage;
+import io.orchard.protocol.message.CastlePerceptionMessage;
+import io.orchard.protocol.message.LandmarkPerceptionMessage;
+import io.orchard.protocol.message.LeanPerceptionMessage;
+import io.orchard.protocol.message.PerceptionMessage;
 import io.orchard.protocol.message.ServerMessage;
 import io.orchard.server.sim.EncodedLine;
 import io.orchard.server.sim.Percept;
@@ -13,7 +17,8 @@ import java.util.List;
  * Encodes what one client is sent in a tick, one line after the other, into one buffer, in the
  * forms the client reads: a broadcast is copied from its shared bytes, a perception
  * ({@link Percept}) becomes one lean line for a client that reads the lean form ({@link LeanLines})
- * and its three messages for the others, the lines that make most of the traffic are written
+ * and its three messages for the others (a perception handed over as its three messages becomes the
+ * same lean line for a lean reader), the lines that make most of the traffic are written
  * directly ({@link FastLines}) and the rest by the codec, all into an array of the network thread
  * that goes to the buffer in one copy. It stops before an {@code AgentAdded} with a model's data,
  * which its caller writes from the copy every client shares.
@@ -68,7 +73,16 @@ final class TickLines {
                     if (carriesModel(plain)) {
                         return i;
                     }
-                    plain(plain, lines);
+                    if (forms.leanPerception() && plain instanceof PerceptionMessage seen && i + 2 < messages.size()
+                            && messages.get(i + 1) instanceof LandmarkPerceptionMessage landmarks
+                            && messages.get(i + 2) instanceof CastlePerceptionMessage castle) {
+                        // A perception that came as its three messages (from a cluster's tick, say):
+                        // the lean reader gets its one line all the same.
+                        lines.bytes(CODEC.encodeLine(LeanPerceptionMessage.of(seen, landmarks, castle)));
+                        i += 2;
+                    } else {
+                        plain(plain, lines);
+                    }
                 }
             }
             return messages.size();

@@ -41,6 +41,26 @@ final class Agent {
         this.heading = heading;
     }
 
+    /** Everything this agent is, to be handed to another part of the world. */
+    AgentHandover handover() {
+        return new AgentHandover(name, owner.id(), body, model, position, heading, AgentHandover.Walk.of(motion),
+                List.copyOf(joints), List.copyOf(timeSensors), resumeToken, perceptionRequested, perceptionEvery,
+                nextPerceptionTick);
+    }
+
+    /** The agent handed over, driven by {@code owner}. */
+    static Agent of(AgentHandover handed, ClientSession owner) {
+        Agent agent = new Agent(handed.name(), owner, handed.body(), handed.model(), handed.position(),
+                handed.heading(), handed.resumeToken());
+        agent.joints.addAll(handed.joints());
+        agent.timeSensors.addAll(handed.timeSensors());
+        agent.motion = handed.walk() == null ? null : handed.walk().motion();
+        agent.perceptionRequested = handed.perceptionRequested();
+        agent.perceptionEvery = handed.perceptionEvery();
+        agent.nextPerceptionTick = handed.nextPerceptionTick();
+        return agent;
+    }
+
     AgentState state() {
         return new AgentState(name, body, position, heading, model, new ArrayList<>(joints),
                 new ArrayList<>(timeSensors));

@@ -8,6 +8,7 @@ import io.orchard.protocol.value.ModelSpec;
 import io.orchard.protocol.value.Nullable;
 import io.orchard.protocol.value.Score;
 import io.orchard.protocol.value.Vec3;
+import io.orchard.server.world.World;
 import io.orchard.server.world.scenario.Scenario;
 import java.util.List;
 import java.util.Locale;
@@ -65,6 +66,13 @@ public record Checkpoint(int format,
         Checks.present(world, "world");
         agents = Checks.list(agents, "agents");
         scores = Checks.list(scores, "scores");
+    }
+
+    /** The game as it is now, as a simulation or a referee holds it. */
+    static Checkpoint of(long seed, SimulationConfig config, Phase phase, long tick, double time, int fruitAtStart,
+                         World world, List<SavedAgent> agents, List<Score> scores) {
+        return new Checkpoint(FORMAT, seed, config.tickRate(), config.clock(), config.timeLimit(), config.waitFor(),
+                phase.name().toLowerCase(Locale.ROOT), tick, time, fruitAtStart, world.toScenario(), agents, scores);
     }
 
     /** The phase as the simulation knows it. */

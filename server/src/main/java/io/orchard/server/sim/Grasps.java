@@ -21,7 +21,8 @@ import java.util.Map;
  */
 final class Grasps {
 
-    private record Request(Agent agent, GraspRequestMessage message) {}
+    /** A grasp asked for in this tick. */
+    record Request(Agent agent, GraspRequestMessage message) {}
 
     private final World world;
     /** The agents in the world, by name. */
@@ -30,6 +31,8 @@ final class Grasps {
     private final Outbox outbox;
     private final List<GameListener> listeners;
     private final Map<String, List<Request>> byFruit = new LinkedHashMap<>();
+    /** The same requests in the order they were asked for. */
+    private final List<Request> asked = new ArrayList<>();
 
     Grasps(World world, Map<String, Agent> agents, Scoreboard scores, Outbox outbox, List<GameListener> listeners) {
         this.world = world;
@@ -44,11 +47,24 @@ final class Grasps {
             fail(agent, message, "the game is not running");
             return;
         }
-        byFruit.computeIfAbsent(message.fruit(), f -> new ArrayList<>()).add(new Request(agent, message));
+        Request request = new Request(agent, message);
+        byFruit.computeIfAbsent(message.fruit(), f -> new ArrayList<>()).add(request);
+        asked.add(request);
+    }
+
+    /**
+     * The grasps asked for so far in this tick, in the order they were asked for, and forgets them:
+     * for a part of a world whose agents may grasp fruit that another part decides on.
+     */
+    List<Request> take() {
+        List<Request> all = new ArrayList<>(asked);
+        clear();
+        return all;
     }
 
     void clear() {
         byFruit.clear();
+        asked.clear();
     }
 
     /** Decides the grasps asked for in this tick; true when a fruit was collected, so that scores changed. */
@@ -91,7 +107,7 @@ final class Grasps {
             collect(winner, fruit, tick, time);
             collected = true;
         }
-        byFruit.clear();
+        clear();
         return collected;
     }
 

@@ -91,6 +91,13 @@ final class Outbox {
         cause = session;
     }
 
+    /** Names a client in the record as another part of the world named it: by its first agent's name. */
+    void labelled(ClientSession session, String label) {
+        if (session.role() == Role.AGENT) {
+            labels.put(session.id(), label);
+        }
+    }
+
     /** How the record names a client. */
     String label(ClientSession session) {
         return session.role() == Role.VIEWER ? "viewer" : labels.getOrDefault(session.id(), "agent");
@@ -173,6 +180,24 @@ final class Outbox {
      */
     void flushRecord() {
         recorder.flush();
+    }
+
+    /**
+     * From now on records to {@code to} and sends to no client of its own: for a part of a game
+     * whose caller records what it says and hands it to the clients itself ({@link Referee}).
+     * The clients' labels are kept.
+     */
+    void recordOnly(Recorder to) {
+        release();
+        recorder = to;
+        sessions.clear();
+        viewers.clear();
+        agentClients.clear();
+    }
+
+    /** Forgets how the record names a client that left. */
+    void forgetLabel(ClientSession session) {
+        labels.remove(session.id());
     }
 
     /** Records nothing more: the game is over. */

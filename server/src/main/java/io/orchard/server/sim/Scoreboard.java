@@ -12,7 +12,7 @@ import java.util.Map;
  * Every agent's points and fruit. An agent's score outlives its connection: the ranking lists every
  * agent that played, best first (most points, then most fruit, then by name).
  */
-final class Scoreboard {
+public final class Scoreboard {
 
     static final Comparator<Score> RANKING = Comparator.comparingInt(Score::points).reversed()
             .thenComparing(Comparator.comparingInt(Score::fruit).reversed())
@@ -20,11 +20,16 @@ final class Scoreboard {
 
     private final Map<String, Score> scores = new LinkedHashMap<>();
 
-    void join(String agent) {
+    /** An empty scoreboard. */
+    public Scoreboard() {}
+
+    /** The agent plays: it has a score from now on, 0 unless it had one. */
+    public void join(String agent) {
         scores.putIfAbsent(agent, new Score(agent, 0, 0));
     }
 
-    int collect(String agent, FruitKind kind) {
+    /** The agent collected a fruit of this kind; returns the points it scored. */
+    public int collect(String agent, FruitKind kind) {
         Score old = scores.getOrDefault(agent, new Score(agent, 0, 0));
         scores.put(agent, new Score(agent, old.points() + kind.points(), old.fruit() + 1));
         return kind.points();
@@ -39,11 +44,13 @@ final class Scoreboard {
         return scores.containsKey(agent);
     }
 
-    void restore(Score score) {
+    /** Sets an agent's score, as a checkpoint kept it. */
+    public void restore(Score score) {
         scores.put(score.agent(), score);
     }
 
-    List<Score> ranking() {
+    /** Every agent's score, best first. */
+    public List<Score> ranking() {
         List<Score> ranked = new ArrayList<>(scores.values());
         ranked.sort(RANKING);
         return ranked;

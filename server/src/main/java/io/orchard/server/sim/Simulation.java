@@ -27,7 +27,6 @@ import io.orchard.server.world.World;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.BlockingQueue;
@@ -338,7 +337,7 @@ public final class Simulation implements Inbox {
      * The start of a lockstep game is due ({@link #startDue()}) but these agents' clients have not
      * ended their setup turns in time: they are recorded as missed, and the game starts without them.
      */
-    void startWithoutSetup() {
+    public void startWithoutSetup() {
         if (!game.startDue()) {
             return;
         }
@@ -351,7 +350,7 @@ public final class Simulation implements Inbox {
     }
 
     /** Whether a lockstep game has its agents and starts once their setup turns are over. */
-    boolean startDue() {
+    public boolean startDue() {
         return game.startDue();
     }
 
@@ -503,9 +502,8 @@ public final class Simulation implements Inbox {
     public Checkpoint checkpoint() {
         List<Checkpoint.SavedAgent> saved = registrations.waiting();
         agents.values().forEach(agent -> saved.add(agent.saved()));
-        return new Checkpoint(Checkpoint.FORMAT, seed, config.tickRate(), config.clock(), config.timeLimit(),
-                config.waitFor(), game.phase().name().toLowerCase(Locale.ROOT), outbox.tick(), outbox.time(),
-                game.fruitAtStart(), world.toScenario(), saved, scores.ranking());
+        return Checkpoint.of(seed, config, game.phase(), outbox.tick(), outbox.time(), game.fruitAtStart(), world,
+                saved, scores.ranking());
     }
 
     /**
@@ -540,6 +538,19 @@ public final class Simulation implements Inbox {
     public void reserveDroppedNames(Duration time) {
         registrations.departed.reserveFor(time);
         nameReservation = time;
+    }
+
+    /**
+     * Hands the game that has started over to a referee, for a program that goes on with its world
+     * simulated in parts ({@link PartialSimulation}): its agents, registrations, reserved names,
+     * scores, phase and turns. From now on what the referee says goes to {@code recorder} alone (the
+     * caller hands it to the clients); this simulation is not used again. Call on the simulation's
+     * thread.
+     */
+    public Referee referee(Recorder recorder) {
+        outbox.recordOnly(recorder);
+        return new Referee(world, config, seed, agents, registrations, game, scores, turns, outbox, walking,
+                listeners, oneGameOnly);
     }
 
     /** Names of the agents of a restored game that are still waiting for their controllers. */

@@ -69,6 +69,14 @@ final class Turns {
                 ended.add(received.session().id());
             }
         }
+        return ended(ended, stillConnected);
+    }
+
+    /**
+     * The tick ends with these clients' turns ended: who among its clients did not end theirs, and
+     * how (a client that left is not counted). Ordered as the clients were given.
+     */
+    Map<Long, MissedTurn.Kind> ended(Set<Long> ended, Collection<Long> stillConnected) {
         Map<Long, MissedTurn.Kind> missed = new LinkedHashMap<>();
         for (Long id : new ArrayList<>(expected)) {
             if (!stillConnected.contains(id)) {

@@ -15,6 +15,15 @@ final class Walking {
     /** Where a move meets another agent: the walker stops at {@code stop}, touching {@code other}. */
     record Contact(Agent other, Vec3 stop) {}
 
+    /**
+     * The first agent a walker's segment meets among agents this walking does not hold, for a part
+     * of a world whose agents may walk beyond it.
+     */
+    interface Beyond {
+        /** The first agent held elsewhere that the segment meets, or null when none does or all are held here. */
+        FirstContact first(Agent mover, Vec3 from, Vec3 to);
+    }
+
     /** Grid cell size: twice the largest body radius, so touching agents are in neighbouring cells. */
     private static final double CELL = 4.0;
 
@@ -24,6 +33,8 @@ final class Walking {
     private final double maxRadius;
     private final Outbox outbox;
     private AgentGrid grid;
+    /** Who answers for the agents beyond those held here; null when every agent is held here. */
+    Beyond beyond;
 
     Walking(Map<String, Agent> agents, double maxRadius, Outbox outbox) {
         this.agents = agents;
@@ -51,6 +62,13 @@ final class Walking {
             grid.forEachInBox(minX, minZ, maxX, maxZ, nearest);
         } else {
             agents.values().forEach(nearest);
+        }
+        if (beyond != null) {
+            FirstContact far = beyond.first(mover, from, to);
+            if (far != null && nearest.closer(far.distance(), far.agent())) {
+                nearest.firstT = far.distance();
+                nearest.first = new Agent(far.agent(), mover.owner, mover.body, null, to, 0, "elsewhere");
+            }
         }
         if (nearest.first == null) {
             return null;
@@ -86,10 +104,15 @@ final class Walking {
                 return;
             }
             double t = entry(from, dx, dz, length, other.position, mover.body.radius() + other.body.radius());
-            if (t < firstT || (t == firstT && t != Double.MAX_VALUE && other.name.compareTo(first.name) < 0)) {
+            if (closer(t, other.name)) {
                 firstT = t;
                 first = other;
             }
+        }
+
+        /** Whether meeting the agent of that name at {@code t} along the segment comes before the first so far. */
+        boolean closer(double t, String name) {
+            return t < firstT || (t == firstT && t != Double.MAX_VALUE && name.compareTo(first.name) < 0);
         }
     }
 
@@ -110,7 +133,7 @@ final class Walking {
      * The distance along the segment at which a walker comes within {@code reach} of {@code centre},
      * or MAX_VALUE if it never does. A walker already that close counts only if it walks closer.
      */
-    private static double entry(Vec3 from, double dx, double dz, double length, Vec3 centre, double reach) {
+    static double entry(Vec3 from, double dx, double dz, double length, Vec3 centre, double reach) {
         double ux = dx / length;
         double uz = dz / length;
         double cx = centre.x() - from.x();

@@ -44,6 +44,23 @@ final class FruitStore {
         this.grid = new CircleGrid(bounds, x, z);
     }
 
+    /** A store sharing this one's fruit and index, with the fruit still there as this one has them now. */
+    private FruitStore(FruitStore from) {
+        this.fruit = from.fruit;
+        this.states = from.states;
+        this.x = from.x;
+        this.z = from.z;
+        this.present = from.present.clone();
+        this.grid = from.grid;
+        this.byId.putAll(from.byId);
+        this.remaining = from.remaining;
+    }
+
+    /** A store of its own with the fruit this one has now: taking from one leaves the other's. */
+    FruitStore copy() {
+        return new FruitStore(this);
+    }
+
     int remaining() {
         return remaining;
     }

@@ -64,6 +64,31 @@ public final class World {
         this.obstacleList = List.of(obstacles.records);
     }
 
+    /** A world with the static things of {@code shared} and fruit of its own. */
+    private World(World shared, FruitStore fruit) {
+        this.bounds = shared.bounds;
+        this.obstacles = shared.obstacles;
+        this.castle = shared.castle;
+        this.river = shared.river;
+        this.bridges = shared.bridges;
+        this.water = shared.water;
+        this.moves = shared.moves;
+        this.sight = shared.sight;
+        this.fruit = fruit;
+        this.obstacleList = shared.obstacleList;
+    }
+
+    /**
+     * A world with this one's trees, tables, castle, river and bridges, which never change and are
+     * shared, not copied, and a store of its own of the fruit this one has now, in the same spatial
+     * index (so that the two visit the fruit near a point in the same order). Taking a fruit
+     * from one leaves the other's. For a program that holds parts of one world on several threads:
+     * each part's world may be read on its own thread while the others are read on theirs.
+     */
+    public World withOwnFruit() {
+        return new World(this, fruit.copy());
+    }
+
     /** The river without the decks of its bridges: the water agents must keep out of. */
     private static Geometry uncovered(River river, List<Bridge> bridges) {
         List<Geometry> decks = new ArrayList<>();

@@ -147,6 +147,24 @@ class LeanLinesTest {
         return all;
     }
 
+    /**
+     * A perception handed to a session as its three ordinary messages (as a cluster's gateway hands
+     * on what its tick sent) reaches a client that reads the lean form as the same lean line, and
+     * any other client as the three lines.
+     */
+    @Test
+    void aPerceptionSentAsItsThreeMessagesIsTheSameLeanLine() {
+        Percept seen = play(WorldGenerator.benchmark(2026).generate(), 3, new Sight(50, Math.toRadians(120)), 2).get(5);
+        for (ClientForms forms : List.of(new ClientForms(true, false), ClientForms.ORDINARY)) {
+            ByteBuf fromPercept = Unpooled.buffer();
+            ByteBuf fromMessages = Unpooled.buffer();
+            assertThat(TickLines.write(List.of(seen), 0, forms, fromPercept)).isEqualTo(1);
+            assertThat(TickLines.write(seen.messages(), 0, forms, fromMessages)).isEqualTo(3);
+            assertThat(fromMessages.toString(StandardCharsets.UTF_8)).as("the lines for %s", forms)
+                    .isEqualTo(fromPercept.toString(StandardCharsets.UTF_8));
+        }
+    }
+
     @Test
     void perceptionsOfTheBenchmarkWorldAreWrittenAsTheCodecWritesTheirLeanRecord() {
         List<Percept> seen = play(WorldGenerator.benchmark(2026).generate(), 300, new Sight(50, Math.toRadians(120)), 6);

@@ -1,0 +1,70 @@
+package io.orchard.cluster.node;
+
+import org.apache.pekko.serialization.SerializerWithStringManifest;
+import tools.jackson.databind.DeserializationFeature;
+import tools.jackson.databind.json.JsonMapper;
+
+/**
+ * Carries the cluster's messages ({@link ClusterMessage}) between nodes as JSON, with the Jackson 3
+ * that the protocol already brings (no second Jackson, and not Java serialization, which Pekko
+ * refuses by default): the manifest names the message's class, the bytes are its record's fields;
+ * the protocol's messages inside travel as the protocol's own lines ({@link Wire}). Pekko's
+ * configuration binds it ({@code reference.conf} of this module).
+ */
+public final class ClusterSerializer extends SerializerWithStringManifest {
+
+    /** Pekko's number for this serializer: unique among the serializers of a system. */
+    static final int IDENTIFIER = 7557;
+
+    /** Messages and bytes this JVM's serializers wrote: what its node sent to other nodes. */
+    private static final java.util.concurrent.atomic.AtomicLong MESSAGES = new java.util.concurrent.atomic.AtomicLong();
+    private static final java.util.concurrent.atomic.AtomicLong BYTES = new java.util.concurrent.atomic.AtomicLong();
+
+    private static final JsonMapper MAPPER = JsonMapper.builder()
+            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+            .build();
+
+    /** Made by Pekko, once per actor system. */
+    public ClusterSerializer() {}
+
+    @Override
+    public int identifier() {
+        return IDENTIFIER;
+    }
+
+    @Override
+    public String manifest(Object message) {
+        return message.getClass().getName();
+    }
+
+    @Override
+    public byte[] toBinary(Object message) {
+        if (!(message instanceof ClusterMessage)) {
+            throw new IllegalArgumentException("this serializer carries the cluster's messages, not "
+                    + message.getClass().getName());
+        }
+        byte[] bytes = MAPPER.writeValueAsBytes(message);
+        MESSAGES.incrementAndGet();
+        BYTES.addAndGet(bytes.length);
+        return bytes;
+    }
+
+    /** How many cluster messages, and how many bytes of them, this JVM has sent to other nodes so far. */
+    public static long[] sent() {
+        return new long[] {MESSAGES.get(), BYTES.get()};
+    }
+
+    @Override
+    public Object fromBinary(byte[] bytes, String manifest) {
+        Class<?> type;
+        try {
+            type = Class.forName(manifest, false, ClusterSerializer.class.getClassLoader());
+        } catch (ClassNotFoundException e) {
+            throw new IllegalArgumentException("no message class " + manifest + " in this node's Orchard", e);
+        }
+        if (!ClusterMessage.class.isAssignableFrom(type)) {
+            throw new IllegalArgumentException("manifest " + manifest + " names no cluster message");
+        }
+        return MAPPER.readValue(bytes, type);
+    }
+}
