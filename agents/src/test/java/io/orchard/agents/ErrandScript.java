@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.agents.language.Language;
 import io.orchard.agents.map.KnownFruit;
+import io.orchard.agents.map.KnownObstacle;
 import io.orchard.agents.zoo.Recording;
 import io.orchard.protocol.value.FruitKind;
 import io.orchard.protocol.value.FruitState;
@@ -14,6 +15,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.stream.Collectors;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
@@ -45,6 +47,8 @@ final class ErrandScript {
         final List<Long> toldAt = new CopyOnWriteArrayList<>();
         /** The fruit it knew of when it was told each sentence, by the sentence's turn. */
         final List<List<KnownFruit>> knewWhenTold = new CopyOnWriteArrayList<>();
+        /** The ids of the trees, tables and other obstacles it knew of when told each sentence. */
+        final List<Set<String>> obstaclesWhenTold = new CopyOnWriteArrayList<>();
 
         Errand() {
             this(Language.ENGLISH);
@@ -77,6 +81,7 @@ final class ErrandScript {
         protected void onInstruction(String text, String from) {
             toldAt.add(tick());
             knewWhenTold.add(List.copyOf(memory().fruit()));
+            obstaclesWhenTold.add(memory().obstacles().stream().map(KnownObstacle::id).collect(Collectors.toSet()));
             super.onInstruction(text, from);
         }
     }
@@ -103,10 +108,12 @@ final class ErrandScript {
         final List<FruitState> taken;
         /** The fruit the agent knew of when told. */
         final List<KnownFruit> knew;
+        /** The ids of the obstacles (trees, tables) the agent knew of when told. */
+        final Set<String> knewObstacles;
         final Window previous;
 
         Window(Step step, Recording recording, long from, long to, List<String> said, List<FruitState> taken,
-               List<KnownFruit> knew, Window previous) {
+               List<KnownFruit> knew, Set<String> knewObstacles, Window previous) {
             this.previous = previous;
             this.step = step;
             this.recording = recording;
@@ -115,6 +122,7 @@ final class ErrandScript {
             this.said = said;
             this.taken = taken;
             this.knew = knew;
+            this.knewObstacles = knewObstacles;
         }
 
         List<Recording.Tick> ticks() {
@@ -249,7 +257,7 @@ final class ErrandScript {
                 }
             }
             previous = new Window(steps.get(i), recorded, a, b, List.copyOf(agent.said.subList(saidFrom.get(i),
-                    saidTo.get(i))), taken, agent.knewWhenTold.get(i), previous);
+                    saidTo.get(i))), taken, agent.knewWhenTold.get(i), agent.obstaclesWhenTold.get(i), previous);
             steps.get(i).check().accept(previous);
         }
     }
