@@ -19,6 +19,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import org.apache.pekko.actor.CoordinatedShutdown;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.ITypeConverter;
@@ -190,12 +191,14 @@ public final class NodeMain implements Callable<Integer> {
         }
         ClusterNode node = builder.start();
         CountDownLatch ended = new CountDownLatch(1);
-        Thread leave = new Thread(() -> {
+        // Pekko's remoting closes its transport in a JVM shutdown hook of its own, at once unless hooks
+        // registered with its coordinated shutdown are still running: a plain JVM hook would leave the
+        // cluster without a transport, and the others would take the node for lost.
+        CoordinatedShutdown.get(node.system()).addJvmShutdownHook(() -> {
             out.println("leaving the cluster");
             node.close();
             ended.countDown();
-        }, "orchard-node-leave");
-        Runtime.getRuntime().addShutdownHook(leave);
+        });
         out.printf(Locale.ROOT, "node listening for agents and viewers on %s:%d, cluster member at port %d%n", bind,
                 node.port(), node.clusterPort());
         Thread commands = new Thread(() -> readCommands(node), "orchard-node-console");
