@@ -70,6 +70,8 @@ class UnseenErrandsGameTest {
                             assertThat(Math.abs(w.end().x() - w.start().x())).as("%s", w).isLessThan(1.2);
                             assertThat(off(w.endHeading(), -Math.PI / 2)).as("facing east").isLessThan(0.1);
                         }),
+                step("walk norht 10 metres", CARRYING_ON,
+                        w -> assertThat(w.end().z() - w.start().z()).as("%s", w).isBetween(-11.2, -8.8)),
                 step("go 5 metres to your left", CARRYING_ON,
                         w -> assertThat(w.along(w.end(), w.startHeading() + Math.PI / 2)).as("%s", w).isBetween(3.8, 6.2)),
                 step("how many coconuts do you have?", "I haven't collected any coconuts yet\\.", w -> { }),

@@ -73,6 +73,11 @@ final class WalkPursuit implements Pursuit {
                 }
             }
             Status status = kit.navigator.goTo(point, 0.8);
+            if (status == Status.DONE && kit.motor.walking()) {
+                // Near enough to count as there, but the move under way ends at the point itself:
+                // stopping now would leave a measured walk short of what was asked.
+                return Status.RUNNING;
+            }
             return status == Status.RUNNING ? status : finish(status);
         }
         if (goal == null || here.distance(goal) < 2) {
