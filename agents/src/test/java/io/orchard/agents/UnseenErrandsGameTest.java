@@ -204,7 +204,9 @@ class UnseenErrandsGameTest {
                         + "again\\.", w -> { }),
                 crossing("cross the river by the southern bridge", south),
                 crossing("go to the bridge, cross it and then explore", null),
-                step("keep out of the forest", "From now on I won't go into the forest\\.", w -> { })));
+                step("keep out of the forest", "From now on I won't go into the forest\\.", w -> { }),
+                step("explore the woods on the other side of the river", "I won't: that is against your rule .*forest.*",
+                        w -> assertThat(w.said).as("refused before setting out: %s", w).hasSize(1))));
     }
 
     /** Crossing the river: over the bridge (the one named, when given), to the other bank, never through the water. */
