@@ -102,6 +102,23 @@ class UnseenErrandsGameTest {
                 })));
     }
 
+    /** A walk that cannot go the whole way: it says how far it went, and that is how far it went. */
+    @Test
+    void aWalkIntoTheCastleSaysHowFarItWent() throws Exception {
+        Point2 wall = world.castle().centre();
+        while (!world.checkPlace(wall, 1.2).isFree()) {
+            wall = new Point2(wall.x(), wall.z() + 0.5);
+        }
+        Point2 start = Places.freeNear(world, new Point2(wall.x(), wall.z() + 4));
+        play("castle-wall", start, 60, List.of(
+                step("walk norht 10 metres", "(Done: I went|I went only) \\d+ metres? north, not the 10 metres you asked: .*", w -> {
+                    Matcher m = Pattern.compile("I went (?:only )?(\\d+) metre").matcher(w.last());
+                    assertThat(m.find()).isTrue();
+                    double went = w.start().z() - w.end().z();
+                    assertThat(Double.parseDouble(m.group(1))).as("%s: went %.1f", w, went).isBetween(went - 1, went + 1);
+                })));
+    }
+
     private static java.util.function.Consumer<Window> still() {
         return w -> assertThat(w.end().distance(w.start())).as("%s", w).isLessThan(0.05);
     }
