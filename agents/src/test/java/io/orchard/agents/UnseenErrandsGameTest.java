@@ -70,6 +70,8 @@ class UnseenErrandsGameTest {
                             assertThat(Math.abs(w.end().x() - w.start().x())).as("%s", w).isLessThan(1.2);
                             assertThat(off(w.endHeading(), -Math.PI / 2)).as("facing east").isLessThan(0.1);
                         }),
+                step("walk norht 10 metres", CARRYING_ON,
+                        w -> assertThat(w.end().z() - w.start().z()).as("%s", w).isBetween(-11.2, -8.8)),
                 step("go 5 metres to your left", CARRYING_ON,
                         w -> assertThat(w.along(w.end(), w.startHeading() + Math.PI / 2)).as("%s", w).isBetween(3.8, 6.2)),
                 step("how many coconuts do you have?", "I haven't collected any coconuts yet\\.", w -> { }),
@@ -97,6 +99,23 @@ class UnseenErrandsGameTest {
                     // it goes on to look around, turning as it does: the walk shows the turn, a quarter left
                     assertThat(w.along(w.end(), w.startHeading() + Math.PI / 2)).as("%s", w).isBetween(2.2, 3.8);
                     assertThat(Math.abs(w.along(w.end(), w.startHeading()))).as("%s", w).isLessThan(0.8);
+                })));
+    }
+
+    /** A walk that cannot go the whole way: it says how far it went, and that is how far it went. */
+    @Test
+    void aWalkIntoTheCastleSaysHowFarItWent() throws Exception {
+        Point2 wall = world.castle().centre();
+        while (!world.checkPlace(wall, 1.2).isFree()) {
+            wall = new Point2(wall.x(), wall.z() + 0.5);
+        }
+        Point2 start = Places.freeNear(world, new Point2(wall.x(), wall.z() + 4));
+        play("castle-wall", start, 60, List.of(
+                step("walk norht 10 metres", "(Done: I went|I went only) \\d+ metres? north, not the 10 metres you asked: .*", w -> {
+                    Matcher m = Pattern.compile("I went (?:only )?(\\d+) metre").matcher(w.last());
+                    assertThat(m.find()).isTrue();
+                    double went = w.start().z() - w.end().z();
+                    assertThat(Double.parseDouble(m.group(1))).as("%s: went %.1f", w, went).isBetween(went - 1, went + 1);
                 })));
     }
 
@@ -202,7 +221,9 @@ class UnseenErrandsGameTest {
                         + "again\\.", w -> { }),
                 crossing("cross the river by the southern bridge", south),
                 crossing("go to the bridge, cross it and then explore", null),
-                step("keep out of the forest", "From now on I won't go into the forest\\.", w -> { })));
+                step("keep out of the forest", "From now on I won't go into the forest\\.", w -> { }),
+                step("explore the woods on the other side of the river", "I won't: that is against your rule .*forest.*",
+                        w -> assertThat(w.said).as("refused before setting out: %s", w).hasSize(1))));
     }
 
     /** Crossing the river: over the bridge (the one named, when given), to the other bank, never through the water. */

@@ -207,10 +207,10 @@ final class Rulebook {
         }
         Reference area = avoid.area();
         if (step instanceof GoTo goTo) {
-            return goTo.destination().equals(area);
+            return within(goTo.destination(), area);
         }
         if (step instanceof Explore explore) {
-            return area.equals(explore.area());
+            return explore.area() != null && within(explore.area(), area);
         }
         if (step instanceof Cross cross) {
             Kind landmark = cross.landmark().kind();
@@ -219,6 +219,19 @@ final class Rulebook {
             return (otherBank && (landmark == Kind.RIVER || landmark == Kind.BRIDGE)) || cross.landmark().equals(area);
         }
         return false;
+    }
+
+    /**
+     * Whether the words name the area or a part of it. There is one castle, one river and one forest,
+     * so a rule about the whole of one ("keep out of the forest") covers it wherever the words place
+     * it ("the woods on the other side of the river").
+     */
+    private static boolean within(Reference target, Reference area) {
+        if (target.equals(area)) {
+            return true;
+        }
+        boolean landmark = area.kind() == Kind.FOREST || area.kind() == Kind.RIVER || area.kind() == Kind.CASTLE;
+        return landmark && area.equals(Reference.to(area.kind())) && target.kind() == area.kind();
     }
 
     // ---- grounding ------------------------------------------------------------------------------

@@ -4,12 +4,14 @@ import io.orchard.agents.behaviour.Status;
 import io.orchard.agents.language.RelativeMove;
 import io.orchard.agents.map.Bearings;
 import io.orchard.protocol.value.Point2;
+import java.util.function.DoubleFunction;
 
 /**
  * Walking so far in a direction ("head north for 15 metres") when the point it leads to is where
  * the agent cannot stand: in the river or beyond the world's edge. The agent says why in the
  * world's terms, and how far it can go that way, and goes as far as that: "That point is in the
- * river; the nearest dry place that way is 9 metres north, and I'll go there."
+ * river; the nearest dry place that way is 9 metres north, and I'll go there." When its way turns
+ * out blocked on the way, by something it did not know of, it says how far it went.
  */
 final class Shortfall {
 
@@ -27,8 +29,8 @@ final class Shortfall {
         Point2 target = Bearings.ahead(here, heading, distance);
         String problem = problem(kit, target);
         if (problem == null) {
-            return WalkPursuit.to(kit, target, kit.speech.went(kit.speech.metres(RelativeMove.metres(distance),
-                    direction)));
+            return WalkPursuit.measured(kit, target, kit.speech.went(kit.speech.metres(RelativeMove.metres(distance),
+                    direction)), blocked(kit, distance, direction));
         }
         double reach = distance;
         while (reach > 0 && problem(kit, Bearings.ahead(here, heading, reach)) != null) {
@@ -40,8 +42,14 @@ final class Shortfall {
         }
         String dry = kit.speech.metres(RelativeMove.metres(Math.floor(reach)), direction);
         kit.motor.say(kit.speech.pointNearest(problem, dry));
-        return WalkPursuit.to(kit, Bearings.ahead(here, heading, reach), kit.speech.wentShort(dry,
-                kit.speech.metres(RelativeMove.metres(distance)), problem));
+        return WalkPursuit.measured(kit, Bearings.ahead(here, heading, reach), kit.speech.wentShort(dry,
+                kit.speech.metres(RelativeMove.metres(distance)), problem), blocked(kit, distance, direction));
+    }
+
+    /** What the agent says when its way turns out blocked, given how far it went. */
+    private static DoubleFunction<String> blocked(Kit kit, double distance, String direction) {
+        return went -> kit.speech.blockedShort(kit.speech.metres(RelativeMove.metres(Math.floor(went)), direction),
+                kit.speech.metres(RelativeMove.metres(distance)));
     }
 
     /** Why the agent cannot stand at this point, in the world's words; null when it can, as far as it knows. */

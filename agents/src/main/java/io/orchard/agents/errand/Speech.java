@@ -420,6 +420,12 @@ final class Speech {
                 + problem + ".";
     }
 
+    String blockedShort(String went, String asked) {
+        return de() ? "Ich bin nur " + went + " gegangen, nicht die " + asked + ", um die du gebeten hast: "
+                + "weiter finde ich keinen Weg." : "I went only " + went + ", not the " + asked + " you asked: I can't "
+                + "find a way further.";
+    }
+
     String beyondTheEdge() {
         return de() ? "jenseits des Randes der Welt" : "beyond the edge of the world";
     }

@@ -24,6 +24,9 @@ final class WalkPursuit implements Pursuit {
     private final double heading;
     private final boolean backwards;
     private final String arrived;
+    /** For a measured walk, what it says when it cannot go the whole way, given how far it went; else null. */
+    private java.util.function.DoubleFunction<String> shortOf;
+    private Point2 from;
     private Point2 goal;
     private String outcome = "";
 
@@ -38,6 +41,17 @@ final class WalkPursuit implements Pursuit {
     /** Walks to a point and stops there. */
     static WalkPursuit to(Kit kit, Point2 point, String arrived) {
         return new WalkPursuit(kit, point, Double.NaN, false, arrived);
+    }
+
+    /**
+     * Walks to a point so far in a direction, as it was asked; when the way turns out blocked, it says
+     * how far it went ({@code shortOf}, given the distance walked) instead of only that it found no way.
+     */
+    static WalkPursuit measured(Kit kit, Point2 point, String arrived, java.util.function.DoubleFunction<String> shortOf) {
+        WalkPursuit walk = new WalkPursuit(kit, point, Double.NaN, false, arrived);
+        walk.shortOf = shortOf;
+        walk.from = kit.here();
+        return walk;
     }
 
     /** Walks {@code distance} in the direction of {@code heading}; backwards keeps facing the way it faces. */
@@ -73,6 +87,11 @@ final class WalkPursuit implements Pursuit {
                 }
             }
             Status status = kit.navigator.goTo(point, 0.8);
+            if (status == Status.DONE && kit.motor.walking()) {
+                // Near enough to count as there, but the move under way ends at the point itself:
+                // stopping now would leave a measured walk short of what was asked.
+                return Status.RUNNING;
+            }
             return status == Status.RUNNING ? status : finish(status);
         }
         if (goal == null || here.distance(goal) < 2) {
@@ -96,7 +115,11 @@ final class WalkPursuit implements Pursuit {
 
     private Status finish(Status status) {
         kit.standStill();
-        outcome = status == Status.DONE ? arrived : kit.speech.noWayThere();
+        if (status == Status.DONE) {
+            outcome = arrived;
+        } else {
+            outcome = shortOf != null ? shortOf.apply(from.distance(kit.here())) : kit.speech.noWayThere();
+        }
         return status;
     }
 
