@@ -4,16 +4,11 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import io.orchard.agents.language.Interpretation.NotUnderstood;
 import io.orchard.agents.language.Interpretation.Understood;
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.Objects;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -51,27 +46,17 @@ class FreshInstructionsTest {
     }
 
     static List<Case> set() {
-        List<Case> cases = new ArrayList<>();
-        try (InputStream in = Objects.requireNonNull(FreshInstructionsTest.class.getResourceAsStream(SET), SET);
-             BufferedReader reader = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
-            String text;
-            int line = 0;
-            while ((text = reader.readLine()) != null) {
-                line++;
-                if (text.isBlank() || text.startsWith("#")) {
-                    continue;
+        try {
+            return InstructionSets.lines(SET).stream().map(line -> {
+                if (line.german()) {
+                    throw new IllegalStateException(SET + ":" + line.number() + " must be SENTENCE<TAB>EXPECTED, "
+                            + "with no third field");
                 }
-                String[] fields = text.split("\t", -1);
-                if (fields.length != 2) {
-                    throw new IllegalStateException(SET + ":" + line + " must be SENTENCE<TAB>EXPECTED, was '" + text
-                            + "'");
-                }
-                cases.add(new Case(line, fields[0], fields[1].strip()));
-            }
+                return new Case(line.number(), line.sentence(), line.expected());
+            }).toList();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
-        return cases;
     }
 
     @Test
