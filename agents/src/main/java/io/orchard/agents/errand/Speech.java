@@ -83,42 +83,17 @@ final class Speech {
     String bearing(Point2 from, Point2 thing) {
         String sector = Grounder.compass(from, thing);
         return String.format(Locale.ROOT, de() ? "%.0f m Richtung %s" : "%.0f m to the %s", from.distance(thing),
-                de() ? compassNoun(sector) : sector);
+                compass(sector));
     }
 
     /** A compass direction as a noun: "north-east", "Nordosten". */
     String compass(String sector) {
-        return de() ? compassNoun(sector) : sector;
+        return Phrasing.compass(sector, language());
     }
 
     /** A compass direction as an adverb: "north-east", "nordöstlich". */
     String compassOf(String sector) {
-        if (!de()) {
-            return sector;
-        }
-        return switch (sector) {
-            case "north" -> "nördlich";
-            case "south" -> "südlich";
-            case "east" -> "östlich";
-            case "west" -> "westlich";
-            case "north-east" -> "nordöstlich";
-            case "north-west" -> "nordwestlich";
-            case "south-east" -> "südöstlich";
-            default -> "südwestlich";
-        };
-    }
-
-    private static String compassNoun(String sector) {
-        return switch (sector) {
-            case "north" -> "Norden";
-            case "south" -> "Süden";
-            case "east" -> "Osten";
-            case "west" -> "Westen";
-            case "north-east" -> "Nordosten";
-            case "north-west" -> "Nordwesten";
-            case "south-east" -> "Südosten";
-            default -> "Südwesten";
-        };
+        return Phrasing.compassAdverb(sector, language());
     }
 
     /** "a", "a and b", "a, b and c"; "und" in German. */

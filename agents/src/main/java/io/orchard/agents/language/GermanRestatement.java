@@ -546,7 +546,7 @@ final class GermanRestatement {
                 .replace(" zu dem ", " zum ").replace(" von dem ", " vom ").replace(" bei dem ", " beim ");
     }
 
-    private static String compass(String wireName) {
+    static String compass(String wireName) {
         return switch (wireName) {
             case "north" -> "Norden";
             case "south" -> "Süden";
@@ -559,7 +559,7 @@ final class GermanRestatement {
         };
     }
 
-    private static String adverb(String wireName) {
+    static String adverb(String wireName) {
         return switch (wireName) {
             case "north" -> "nördlich";
             case "south" -> "südlich";

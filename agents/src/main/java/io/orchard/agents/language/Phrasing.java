@@ -22,6 +22,16 @@ public final class Phrasing {
     private Phrasing() {
     }
 
+    /** A compass sector ("north-east", as the wire names it) as a noun: "north-east", "Nordosten". */
+    public static String compass(String sector, Language language) {
+        return language == Language.GERMAN ? GermanRestatement.compass(sector) : sector;
+    }
+
+    /** A compass sector as an adverb of place: "north-east", "nordöstlich". */
+    public static String compassAdverb(String sector, Language language) {
+        return language == Language.GERMAN ? GermanRestatement.adverb(sector) : sector;
+    }
+
     /** One object of the reference, with its article: "a tree", "the castle"; in German, in the case given. */
     public static String noun(Reference reference, Language language, Case grammatical) {
         return language == Language.GERMAN ? GermanRestatement.noun(reference, german(grammatical))
