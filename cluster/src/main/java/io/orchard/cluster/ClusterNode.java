@@ -12,6 +12,7 @@ import io.orchard.cluster.node.TickSingleton;
 import io.orchard.cluster.parcel.ParcelGrid;
 import io.orchard.cluster.parcel.ParcelId;
 import io.orchard.protocol.value.ClockMode;
+import io.orchard.server.OptionChecks;
 import io.orchard.server.Version;
 import io.orchard.server.net.NetLimits;
 import io.orchard.server.net.NetServer;
@@ -191,7 +192,10 @@ public final class ClusterNode implements AutoCloseable {
         }
     }
 
-    /** Configures a {@link ClusterNode}; every setter checks its value and names it when it is wrong. */
+    /**
+     * Configures a {@link ClusterNode}; every setter checks its value and names it when it is wrong, the
+     * options a server also takes with the server's own checks, so that they are refused in its words.
+     */
     public static final class Builder {
 
         private String bind = "127.0.0.1";
@@ -224,13 +228,13 @@ public final class ClusterNode implements AutoCloseable {
 
         /** The port agents and viewers connect to, 0 for any free one. */
         public Builder port(int port) {
-            this.port = checkPort(port, "port");
+            this.port = OptionChecks.port(port, "port");
             return this;
         }
 
         /** The port of the node's cluster member, 0 for any free one. */
         public Builder clusterPort(int port) {
-            this.clusterPort = checkPort(port, "cluster port");
+            this.clusterPort = OptionChecks.port(port, "cluster port");
             return this;
         }
 
@@ -263,25 +267,25 @@ public final class ClusterNode implements AutoCloseable {
 
         /** Ticks per simulated second, 1 to 1000. */
         public Builder tickRate(int tickRate) {
-            this.tickRate = tickRate;
-            return this;
-        }
-
-        /** The game's length in simulated seconds. */
-        public Builder timeLimit(double seconds) {
-            this.timeLimit = seconds;
+            this.tickRate = OptionChecks.tickRate(tickRate);
             return this;
         }
 
         /** Start the game only when this many agents have registered (0: at the first). */
         public Builder waitFor(int agents) {
-            this.waitFor = agents;
+            this.waitFor = OptionChecks.waitFor(agents);
+            return this;
+        }
+
+        /** The game's length in simulated seconds. */
+        public Builder timeLimit(double seconds) {
+            this.timeLimit = OptionChecks.timeLimit(seconds);
             return this;
         }
 
         /** In lockstep, how long a tick waits for agents that have not ended their turn. */
         public Builder lockstepDeadline(Duration deadline) {
-            this.lockstepDeadline = Objects.requireNonNull(deadline, "lockstep deadline");
+            this.lockstepDeadline = OptionChecks.lockstepDeadline(deadline);
             return this;
         }
 
@@ -302,10 +306,7 @@ public final class ClusterNode implements AutoCloseable {
 
         /** Require clients to present this shared secret in their hello, as a server's {@code token}. */
         public Builder token(String token) {
-            if (token != null && token.isEmpty()) {
-                throw new IllegalArgumentException("token must not be empty");
-            }
-            this.token = token;
+            this.token = OptionChecks.token(token, operatorToken);
             return this;
         }
 
@@ -315,10 +316,7 @@ public final class ClusterNode implements AutoCloseable {
          * from the {@link #token token}.
          */
         public Builder operatorToken(String operatorToken) {
-            if (operatorToken != null && operatorToken.isEmpty()) {
-                throw new IllegalArgumentException("operator token must not be empty");
-            }
-            this.operatorToken = operatorToken;
+            this.operatorToken = OptionChecks.operatorToken(operatorToken, token);
             return this;
         }
 
@@ -327,10 +325,7 @@ public final class ClusterNode implements AutoCloseable {
          * (default 60 s), as on one server; zero frees the name at once.
          */
         public Builder nameReservation(Duration time) {
-            if (time == null || time.isNegative()) {
-                throw new IllegalArgumentException("name reservation must be zero or more, was " + time);
-            }
-            this.nameReservation = time;
+            this.nameReservation = OptionChecks.nameReservation(time);
             return this;
         }
 
@@ -343,10 +338,7 @@ public final class ClusterNode implements AutoCloseable {
          */
         public Builder checkpoint(Path file, Duration every) {
             this.checkpoint = Objects.requireNonNull(file, "checkpoint file");
-            if (every != null && (every.isNegative() || every.isZero())) {
-                throw new IllegalArgumentException("checkpoint interval must be positive, was " + every);
-            }
-            this.checkpointEvery = every;
+            this.checkpointEvery = OptionChecks.checkpointInterval(every);
             return this;
         }
 
@@ -371,13 +363,6 @@ public final class ClusterNode implements AutoCloseable {
             return this;
         }
 
-        private static int checkPort(int port, String what) {
-            if (port < 0 || port > 65535) {
-                throw new IllegalArgumentException(what + " must be 0 to 65535, was " + port);
-            }
-            return port;
-        }
-
         /**
          * Joins the cluster (or starts one), hosts parcels and the tick's singleton, and opens the
          * gateway.
@@ -385,10 +370,6 @@ public final class ClusterNode implements AutoCloseable {
          * @throws IOException when the gateway's port cannot be bound
          */
         public ClusterNode start() throws IOException {
-            if (token != null && token.equals(operatorToken)) {
-                throw new IllegalArgumentException("the operator token must differ from the token: every "
-                        + "client holds the token, and would control the game");
-            }
             SimulationConfig config = new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
                     SimulationConfig.DEFAULT.agentsPerSession(), BodyLimits.DEFAULT);
             checkResume();

@@ -325,10 +325,7 @@ public final class WorldServer implements AutoCloseable {
 
         /** The TCP port, 0 for any free one. */
         public Builder port(int port) {
-            if (port < 0 || port > 65535) {
-                throw new IllegalArgumentException("port must be 0 to 65535, was " + port);
-            }
-            this.port = port;
+            this.port = OptionChecks.port(port, "port");
             return this;
         }
 
@@ -339,10 +336,7 @@ public final class WorldServer implements AutoCloseable {
          * ({@code io.orchard:web}) on the class path, and {@link #start()} says so when it is missing.
          */
         public Builder httpPort(int port) {
-            if (port < 0 || port > 65535) {
-                throw new IllegalArgumentException("HTTP port must be 0 to 65535, was " + port);
-            }
-            this.httpPort = port;
+            this.httpPort = OptionChecks.port(port, "HTTP port");
             return this;
         }
 
@@ -360,28 +354,19 @@ public final class WorldServer implements AutoCloseable {
 
         /** Ticks per simulated second, 1 to 1000. */
         public Builder tickRate(int tickRate) {
-            if (tickRate < 1 || tickRate > 1000) {
-                throw new IllegalArgumentException("tick rate must be 1 to 1000 ticks per second, was " + tickRate);
-            }
-            this.tickRate = tickRate;
+            this.tickRate = OptionChecks.tickRate(tickRate);
             return this;
         }
 
         /** The game's length in simulated seconds. */
         public Builder timeLimit(double seconds) {
-            if (!(seconds > 0) || Double.isInfinite(seconds)) {
-                throw new IllegalArgumentException("time limit must be a positive number of seconds, was " + seconds);
-            }
-            this.timeLimit = seconds;
+            this.timeLimit = OptionChecks.timeLimit(seconds);
             return this;
         }
 
         /** Start the game only when this many agents have registered (0: at the first). */
         public Builder waitFor(int agents) {
-            if (agents < 0) {
-                throw new IllegalArgumentException("waitFor must not be negative, was " + agents);
-            }
-            this.waitFor = agents;
+            this.waitFor = OptionChecks.waitFor(agents);
             return this;
         }
 
@@ -392,10 +377,7 @@ public final class WorldServer implements AutoCloseable {
          * again. Every missed turn is recorded.
          */
         public Builder lockstepDeadline(Duration deadline) {
-            if (deadline == null || deadline.isNegative() || deadline.isZero()) {
-                throw new IllegalArgumentException("lockstep deadline must be positive, was " + deadline);
-            }
-            this.lockstepDeadline = deadline;
+            this.lockstepDeadline = OptionChecks.lockstepDeadline(deadline);
             return this;
         }
 
@@ -418,10 +400,7 @@ public final class WorldServer implements AutoCloseable {
          */
         public Builder checkpoint(Path file, Duration every) {
             this.checkpointFile = Objects.requireNonNull(file, "checkpoint file");
-            if (every != null && (every.isNegative() || every.isZero())) {
-                throw new IllegalArgumentException("checkpoint interval must be positive, was " + every);
-            }
-            this.checkpointEvery = every;
+            this.checkpointEvery = OptionChecks.checkpointInterval(every);
             return this;
         }
 
@@ -443,10 +422,7 @@ public final class WorldServer implements AutoCloseable {
          * the name at once.
          */
         public Builder nameReservation(Duration time) {
-            if (time == null || time.isNegative()) {
-                throw new IllegalArgumentException("name reservation must be zero or more, was " + time);
-            }
-            this.nameReservation = time;
+            this.nameReservation = OptionChecks.nameReservation(time);
             return this;
         }
 
@@ -455,11 +431,7 @@ public final class WorldServer implements AutoCloseable {
          * nothing more: controlling the game takes the {@link #operatorToken operator token}.
          */
         public Builder token(String token) {
-            if (token != null && token.isEmpty()) {
-                throw new IllegalArgumentException("token must not be empty");
-            }
-            sameAsOther(token, operatorToken);
-            this.token = token;
+            this.token = OptionChecks.token(token, operatorToken);
             return this;
         }
 
@@ -471,19 +443,8 @@ public final class WorldServer implements AutoCloseable {
          * differ from the {@link #token token}, which every client holds.
          */
         public Builder operatorToken(String operatorToken) {
-            if (operatorToken != null && operatorToken.isEmpty()) {
-                throw new IllegalArgumentException("operator token must not be empty");
-            }
-            sameAsOther(token, operatorToken);
-            this.operatorToken = operatorToken;
+            this.operatorToken = OptionChecks.operatorToken(operatorToken, token);
             return this;
-        }
-
-        private static void sameAsOther(String token, String operatorToken) {
-            if (token != null && token.equals(operatorToken)) {
-                throw new IllegalArgumentException("the operator token must differ from the token: every client"
-                        + " holds the token, and would control the game");
-            }
         }
 
         /**
