@@ -39,6 +39,6 @@ configurations.all {
 // The heaviest tests run only with -PclusterFull, as Maven's cluster-full profile (docs/scaling.md).
 tasks.withType<Test>().configureEach {
     if (!project.hasProperty("clusterFull")) {
-        exclude("**/ClusterNodesTest*", "**/ShardedGameTest*", "**/NodeLeavesTest*")
+        exclude("**/ClusterNodesTest*", "**/ShardedGameTest*")
     }
 }

@@ -24,6 +24,8 @@ import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.SimulationConfig;
 import io.orchard.server.world.World;
 import io.orchard.server.world.WorldGenerator;
+import io.orchard.server.world.scenario.Scenario;
+import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.net.InetSocketAddress;
@@ -34,6 +36,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongFunction;
 import org.apache.pekko.actor.typed.ActorRef;
 import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.ActorSystem;
@@ -210,6 +213,7 @@ public final class ClusterNode implements AutoCloseable {
         private Duration lockstepDeadline = SimulationConfig.DEFAULT.lockstepDeadline();
         private double parcelSize = 60;
         private Path record;
+        private Path scenario;
         private String token;
         private String operatorToken;
         private Duration nameReservation = Duration.ofSeconds(60);
@@ -298,6 +302,15 @@ public final class ClusterNode implements AutoCloseable {
             return this;
         }
 
+        /**
+         * Load the world from a scenario file instead of generating it from the seed, as a server's
+         * {@code scenario}: every node of the cluster loads the same file.
+         */
+        public Builder scenario(Path file) {
+            this.scenario = Objects.requireNonNull(file, "scenario file");
+            return this;
+        }
+
         /** Record the game to this file, on the node where the tick runs. */
         public Builder record(Path file) {
             this.record = Objects.requireNonNull(file, "record file");
@@ -373,6 +386,7 @@ public final class ClusterNode implements AutoCloseable {
             SimulationConfig config = new SimulationConfig(tickRate, clock, timeLimit, waitFor, lockstepDeadline,
                     SimulationConfig.DEFAULT.agentsPerSession(), BodyLimits.DEFAULT);
             checkResume();
+            LongFunction<World> worlds = worlds();
             ActorSystem<Void> system = ActorSystem.create(Behaviors.empty(), NodeSettings.SYSTEM,
                     NodeSettings.of(bind, clusterPort, seedNodes, downAfter));
             try {
@@ -380,14 +394,14 @@ public final class ClusterNode implements AutoCloseable {
                 if (seedNodes.isEmpty()) {
                     cluster.manager().tell(Join.create(cluster.selfMember().address()));
                 }
-                World world = WorldGenerator.standard(seed).generate();
+                World world = worlds.apply(seed);
                 ParcelGrid grid = SplitGame.grid(world, config, parcelSize);
                 ShardedParcels parcels = new ShardedParcels(system, grid);
                 Gateway gateway = new Gateway((int) (cluster.selfMember().uniqueAddress().longUid() & 0x7fffffffL),
                         world.bounds(), config);
                 AtomicLong takenUp = new AtomicLong();
                 ActorRef<TickCommand> tick = ClusterSingleton.get(system).init(SingletonActor.of(TickSingleton.create(
-                        new TickSingleton.Setup(making(config, parcels), parcels, gateway, checkpoint, checkpointEvery,
+                        new TickSingleton.Setup(making(config, parcels, worlds), parcels, gateway, checkpoint, checkpointEvery,
                                 resume, takenUp)), "tick"));
                 ShardedParcels.host(system, grid, world, config, tick);
                 ActorRef<GatewayCommand> actor = system.systemActorOf(Gateway.behavior(gateway), "gateway",
@@ -408,7 +422,7 @@ public final class ClusterNode implements AutoCloseable {
         }
 
         /** How the tick makes its game on this node: new from the seed, or from a saved one. */
-        private TickGames making(SimulationConfig config, ShardedParcels parcels) {
+        private TickGames making(SimulationConfig config, ShardedParcels parcels, LongFunction<World> worlds) {
             long worldSeed = seed;
             double size = parcelSize;
             Duration reservation = nameReservation;
@@ -420,13 +434,28 @@ public final class ClusterNode implements AutoCloseable {
                 return made;
             };
             return new TickGames(
-                    recorder -> game.apply(WorldGenerator.standard(worldSeed).generate(), recorder),
+                    recorder -> game.apply(worlds.apply(worldSeed), recorder),
                     (recorder, saved) -> {
                         SplitGame made = game.apply(World.fromScenario(saved.world()), recorder);
                         made.restore(saved);
                         return made;
                     },
                     append -> open(recording, append));
+        }
+
+        /** The world of a new game by its seed: the scenario's, read now, or the one the seed makes. */
+        private LongFunction<World> worlds() throws IOException {
+            if (scenario == null) {
+                return worldSeed -> WorldGenerator.standard(worldSeed).generate();
+            }
+            Scenario read;
+            try {
+                read = ScenarioFile.read(scenario);
+            } catch (IOException e) {
+                throw new IOException("cannot read the scenario file " + scenario + " (--scenario): " + e.getMessage(),
+                        e);
+            }
+            return worldSeed -> World.fromScenario(read);
         }
 
         /** A saved game to go on with must be of this node's world: its seed. */

@@ -97,6 +97,11 @@ public final class NodeMain implements Callable<Integer> {
             description = "Record the game to FILE, on the node where the tick runs")
     private Path record;
 
+    @Option(names = "--scenario", paramLabel = "FILE",
+            description = "Load the world from a scenario file instead of generating it from --seed; every node "
+                    + "of the cluster loads the same file")
+    private Path scenario;
+
     @Option(names = "--checkpoint", paramLabel = "FILE",
             description = "Save the whole game to FILE, the same file for every node (one machine: a local path; "
                     + "several: a shared file system): when it starts, when fruit is collected, at the end, on the "
@@ -185,6 +190,9 @@ public final class NodeMain implements Callable<Integer> {
             }
             if (record != null) {
                 builder.record(record);
+            }
+            if (scenario != null) {
+                builder.scenario(scenario);
             }
         } catch (IllegalArgumentException e) {
             throw new ParameterException(spec.commandLine(), e.getMessage(), e);

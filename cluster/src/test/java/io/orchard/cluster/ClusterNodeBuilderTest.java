@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import org.assertj.core.api.ThrowableAssert.ThrowingCallable;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A node's builder refuses the options it shares with a server's as the server's does, in the same
@@ -76,6 +77,20 @@ class ClusterNodeBuilderTest {
                 .execute("--port", "0", "--cluster-port", "0", "--token", "s", "--operator-token", "s");
         assertThat(status).as("exit status; out: %s", out.toString(StandardCharsets.UTF_8)).isEqualTo(2);
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("the operator token must differ from the token");
+    }
+
+    @Test
+    void aNodeWhoseScenarioCannotBeReadSaysWhichFileAndStartsNoCluster(@TempDir Path dir) {
+        Path missing = dir.resolve("no-such-world.json");
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int status = NodeMain.command(new ByteArrayInputStream(new byte[0]),
+                        new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8))
+                .execute("--port", "0", "--cluster-port", "0", "--scenario", missing.toString());
+        assertThat(status).as("exit status; out: %s", out.toString(StandardCharsets.UTF_8)).isNotZero();
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("cannot read the scenario file " + missing
+                + " (--scenario)");
+        assertThat(out.toString(StandardCharsets.UTF_8)).doesNotContain("node listening");
     }
 
     private static void refusedAlike(ThrowingCallable node, ThrowingCallable server, String message) {

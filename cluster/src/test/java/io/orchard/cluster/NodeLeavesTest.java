@@ -40,7 +40,7 @@ class NodeLeavesTest {
     @TempDir
     Path dir;
 
-    private static List<AgentController> agents() {
+    static List<AgentController> agents() {
         List<AgentController> agents = new ArrayList<>();
         for (int i = 1; i <= AGENTS / Species.values().length; i++) {
             for (Species species : Species.values()) {
@@ -50,7 +50,7 @@ class NodeLeavesTest {
         return agents;
     }
 
-    private static List<Future<GameOverMessage>> play(ExecutorService threads, List<Integer> ports) {
+    static List<Future<GameOverMessage>> play(ExecutorService threads, List<Integer> ports) {
         List<Future<GameOverMessage>> ends = new ArrayList<>();
         List<AgentController> agents = agents();
         for (int i = 0; i < agents.size(); i++) {
@@ -61,7 +61,7 @@ class NodeLeavesTest {
         return ends;
     }
 
-    private static void awaitEnds(List<Future<GameOverMessage>> ends) throws Exception {
+    static void awaitEnds(List<Future<GameOverMessage>> ends) throws Exception {
         for (Future<GameOverMessage> end : ends) {
             assertThat(end.get(10, TimeUnit.MINUTES)).as("an agent's game ended").isNotNull();
         }

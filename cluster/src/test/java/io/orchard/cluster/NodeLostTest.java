@@ -90,7 +90,7 @@ class NodeLostTest {
                 for (Future<GameOverMessage> end : ends) {
                     assertThat(end.get(10, TimeUnit.MINUTES)).as("an agent's game ended").isNotNull();
                 }
-                check(Files.readAllLines(recording), from);
+                check(Files.readAllLines(recording), from, AGENTS);
                 Thread.sleep(6_000); // a health line of each survivor after the game
                 Set<String> survived = new HashSet<>(lastParcels(first));
                 survived.addAll(lastParcels(second));
@@ -109,7 +109,7 @@ class NodeLostTest {
      * closes (its node was lost, or the world rolled back), again at a surviving node, with its resume
      * token.
      */
-    private static GameOverMessage playThrough(Species species, String name, Path tokens, int port,
+    static GameOverMessage playThrough(Species species, String name, Path tokens, int port,
                                                List<Integer> survivors) throws Exception {
         int at = port;
         for (int attempt = 0; attempt < 20; attempt++) {
@@ -126,7 +126,7 @@ class NodeLostTest {
     }
 
     /** Waits until a fruit was eaten and a checkpoint written after it. */
-    private static void awaitFruitEatenAndCheckpoint(Path checkpoint) throws Exception {
+    static void awaitFruitEatenAndCheckpoint(Path checkpoint) throws Exception {
         long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(5);
         while (System.nanoTime() < deadline) {
             if (Files.exists(checkpoint)) {
@@ -151,7 +151,7 @@ class NodeLostTest {
      * collected and its points stay scored; every agent registers again; the game ends with all of
      * them ranked.
      */
-    private static void check(List<String> all, long from) throws Exception {
+    static void check(List<String> all, long from, int agents) throws Exception {
         List<Message> lines = new ArrayList<>();
         for (String line : all) {
             JsonNode msg = JSON.readTree(line).get("msg");
@@ -193,9 +193,9 @@ class NodeLostTest {
             }
         }
         assertThat(firstTick).as("the first tick after the rollback").isEqualTo(from);
-        assertThat(back).as("the agents that came back").hasSize(AGENTS);
+        assertThat(back).as("the agents that came back").hasSize(agents);
         assertThat(over).as("the game's end").isNotNull();
-        assertThat(over.ranking()).as("the final ranking").hasSize(AGENTS);
+        assertThat(over.ranking()).as("the final ranking").hasSize(agents);
         Map<String, Integer> points = new HashMap<>();
         over.ranking().forEach(score -> points.put(score.agent(), score.points()));
         collectedBefore.forEach((agent, before) -> assertThat(points.get(agent))
@@ -204,7 +204,7 @@ class NodeLostTest {
     }
 
     /** The parcels the node hosted as its last health line said. */
-    private static Set<String> lastParcels(NodeProcesses.Node node) {
+    static Set<String> lastParcels(NodeProcesses.Node node) {
         Set<String> parcels = new HashSet<>();
         for (String line : node.said()) {
             Matcher matcher = PARCELS.matcher(line);

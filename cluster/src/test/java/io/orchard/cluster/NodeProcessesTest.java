@@ -7,6 +7,9 @@ import io.orchard.agents.zoo.Species;
 import io.orchard.protocol.message.GameOverMessage;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.server.WorldServer;
+import io.orchard.server.world.WorldGenerator;
+import io.orchard.server.world.WorldOptions;
+import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
@@ -16,6 +19,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.SplittableRandom;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -46,6 +50,15 @@ class NodeProcessesTest {
     private static final int NODES = Integer.getInteger("orchard.cluster.nodes", 3);
     /** The side of the parcels: {@code -Dorchard.cluster.parcel}, 25 unless set. */
     private static final String PARCEL = System.getProperty("orchard.cluster.parcel", "25");
+    /**
+     * Fruit in the world: {@code -Dorchard.cluster.fruit}; unless set, the paper's world of the seed
+     * (30 fruit), else that world with this many fruit, as a scenario file that the server and every
+     * node load, so that many agents play long enough to be measured.
+     */
+    private static final int FRUIT = Integer.getInteger("orchard.cluster.fruit", 0);
+    /** Each node process's heap: {@code -Dorchard.cluster.nodeHeap}, 512m unless set. */
+    private static final String NODE_HEAP = System.getProperty("orchard.cluster.nodeHeap", "512m");
+    private static final Pattern LAST_TICK = Pattern.compile("\\{\"tick\":(\\d+),");
     private static final Pattern LISTENING =
             Pattern.compile("node listening for agents and viewers on [^:]+:(\\d+), cluster member at port (\\d+)");
     private static final Pattern COUNTS = Pattern.compile("handOvers=(\\d+), sightingsAcrossBorders=(\\d+)");
@@ -55,6 +68,10 @@ class NodeProcessesTest {
 
     private final List<Process> nodes = new ArrayList<>();
     private final List<BlockingQueue<String>> outputs = new ArrayList<>();
+    /** Each node's CPU time when the agents started to connect, in nanoseconds. */
+    private final List<Long> cpuBefore = new ArrayList<>();
+    /** The options that load the world's scenario, if one was written. */
+    private final List<String> world = new ArrayList<>();
 
     @AfterEach
     void stopTheNodes() throws InterruptedException {
@@ -102,10 +119,11 @@ class NodeProcessesTest {
     /** Starts an {@code orchard node} in a JVM of its own; returns its gateway's and its cluster member's ports. */
     private int[] node(List<String> options) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx512m", "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(), "--port", "0",
+                "-Xmx" + NODE_HEAP, "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(), "--port", "0",
                 "--cluster-port", "0", "--seed", String.valueOf(SEED), "--clock", "lockstep", "--time-limit",
                 String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS), "--turn-deadline", "20",
                 "--parcel-size", PARCEL));
+        command.addAll(world);
         command.addAll(options);
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         nodes.add(process);
@@ -146,11 +164,23 @@ class NodeProcessesTest {
                 + String.join("\n", seen));
     }
 
-    /** Prints what the run measured: each node's CPU and last health line, and the tick's figures. */
-    private void measure(String over) {
+    private static long cpu(Process node) {
+        return node.info().totalCpuDuration().map(Duration::toNanos).orElse(0L);
+    }
+
+    /**
+     * Prints what the run measured: each node's CPU (in all, and from the agents' first connection to
+     * the game's end, per agent-tick of the game's {@code ticks}) and last health line, and the tick's
+     * figures.
+     */
+    private void measure(String over, long ticks) {
         List<String> said = new ArrayList<>();
+        long inGame = 0;
         for (int i = 0; i < nodes.size(); i++) {
-            String cpu = nodes.get(i).info().totalCpuDuration().map(d -> d.toMillis() + " ms of CPU").orElse("?");
+            long used = cpu(nodes.get(i)) - cpuBefore.get(i);
+            inGame += used;
+            String cpu = nodes.get(i).info().totalCpuDuration().map(d -> d.toMillis() + " ms of CPU").orElse("?")
+                    + String.format(java.util.Locale.ROOT, ", %.0f ms in the game", used / 1e6);
             String health = "";
             for (String line : outputs.get(i)) {
                 if (line.startsWith("node ")) {
@@ -159,16 +189,25 @@ class NodeProcessesTest {
             }
             said.add(cpu + "; " + health);
         }
-        System.out.printf("%d agents, %d nodes, parcels of %s, %.0f s%n%s%n%s%n", AGENTS, NODES, PARCEL, SECONDS, over,
-                String.join("\n", said));
+        System.out.printf(java.util.Locale.ROOT, "%d agents, %d nodes, parcels of %s, %.0f s, %d ticks; CPU of all "
+                        + "nodes in the game %.1f µs per agent-tick%n%s%n%s%n", AGENTS, NODES, PARCEL, SECONDS, ticks,
+                inGame / 1e3 / Math.max(1, ticks * AGENTS), over, String.join("\n", said));
     }
 
     @Test
     void threeNodeProcessesServeTheGameOneServerServesByteForByte() throws Exception {
         Path single = dir.resolve("server.ndjson");
         List<AgentController> onServer = agents();
-        try (WorldServer server = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP)
-                .timeLimit(SECONDS).waitFor(AGENTS).lockstepDeadline(Duration.ofSeconds(20)).record(single).start()) {
+        WorldServer.Builder serving = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP)
+                .timeLimit(SECONDS).waitFor(AGENTS).lockstepDeadline(Duration.ofSeconds(20)).record(single);
+        if (FRUIT > 0) {
+            Path scenario = dir.resolve("world.json");
+            ScenarioFile.write(new WorldGenerator(new SplittableRandom(SEED), WorldOptions.DEFAULT.withFruit(FRUIT))
+                    .scenario(), scenario);
+            serving.scenario(scenario);
+            world.addAll(List.of("--scenario", scenario.toString()));
+        }
+        try (WorldServer server = serving.start()) {
             play(onServer, List.of(server.port()));
             server.gameOver().get(1, TimeUnit.MINUTES);
         }
@@ -181,6 +220,7 @@ class NodeProcessesTest {
         }
         List<AgentController> onCluster = agents();
         Collections.reverse(onCluster);
+        nodes.forEach(node -> cpuBefore.add(cpu(node)));
         try {
             play(onCluster, ports);
         } catch (AssertionError e) {
@@ -195,7 +235,9 @@ class NodeProcessesTest {
         Matcher counts = COUNTS.matcher(over);
         assertThat(counts.find()).isTrue();
         Thread.sleep(6_000); // one more health line from every node, with what it sent
-        measure(over);
+        List<String> recorded = Files.readAllLines(cluster);
+        Matcher last = LAST_TICK.matcher(recorded.get(recorded.size() - 1));
+        measure(over, last.find() ? Long.parseLong(last.group(1)) : 0);
 
         assertThat(Files.readString(single, StandardCharsets.UTF_8)).as("no turn was missed")
                 .doesNotContain("\"dir\":\"missed\"").contains("\"type\":\"GameOver\"");

@@ -3,6 +3,7 @@ package io.orchard.cluster.node;
 import org.apache.pekko.serialization.SerializerWithStringManifest;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.json.JsonMapper;
+import tools.jackson.databind.jsontype.NamedType;
 
 /**
  * Carries the cluster's messages ({@link ClusterMessage}) between nodes as JSON, with the Jackson 3
@@ -20,12 +21,25 @@ public final class ClusterSerializer extends SerializerWithStringManifest {
     private static final java.util.concurrent.atomic.AtomicLong MESSAGES = new java.util.concurrent.atomic.AtomicLong();
     private static final java.util.concurrent.atomic.AtomicLong BYTES = new java.util.concurrent.atomic.AtomicLong();
 
-    private static final JsonMapper MAPPER = JsonMapper.builder()
-            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+    private static final JsonMapper MAPPER = named(JsonMapper.builder()
+            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES), ParcelCommand.class, ParcelReply.class)
             .build();
 
     /** Made by Pekko, once per actor system. */
     public ClusterSerializer() {}
+
+    /**
+     * Names each kind of the messages that travel inside others, as a parcel's step holds its command
+     * and its last answer: by its record's simple name.
+     */
+    private static JsonMapper.Builder named(JsonMapper.Builder builder, Class<?>... sealed) {
+        for (Class<?> type : sealed) {
+            for (Class<?> kind : type.getPermittedSubclasses()) {
+                builder.registerSubtypes(new NamedType(kind, kind.getSimpleName()));
+            }
+        }
+        return builder;
+    }
 
     @Override
     public int identifier() {

@@ -1,6 +1,5 @@
 package io.orchard.cluster.node;
 
-import io.orchard.cluster.parcel.Parcel;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
@@ -18,7 +17,7 @@ public final class Keeper {
 
     private final ActorRefResolver resolver;
     private final AtomicLong takenUp;
-    private final Map<String, Parcel.State> kept = new HashMap<>();
+    private final Map<String, TickCommand.Keep> kept = new HashMap<>();
 
     /** A keeper that counts in {@code takenUp} the parcels with agents it gave back. */
     Keeper(ActorRefResolver resolver, AtomicLong takenUp) {
@@ -45,17 +44,19 @@ public final class Keeper {
 
     /** A parcel whose node leaves: its state is kept, and it is told so, to stop. */
     void keep(TickCommand.Keep keep) {
-        kept.put(keep.id(), keep.state());
+        kept.put(keep.id(), keep);
         resolver.<ParcelCommand>resolveActorRef(keep.parcel()).tell(new ParcelCommand.Kept());
     }
 
     /** A parcel started: it gets what was kept of it, or nothing. */
     void restore(TickCommand.Restore restore) {
-        Parcel.State state = kept.remove(restore.id());
-        if (state != null && state.hasAgents()) {
+        TickCommand.Keep state = kept.remove(restore.id());
+        if (state != null && state.state().hasAgents()) {
             takenUp.incrementAndGet();
         }
-        resolver.<ParcelCommand>resolveActorRef(restore.parcel()).tell(new ParcelCommand.Restored(state));
+        resolver.<ParcelCommand>resolveActorRef(restore.parcel()).tell(state == null
+                ? new ParcelCommand.Restored(null, 0, null)
+                : new ParcelCommand.Restored(state.state(), state.lastStep(), state.lastReply()));
     }
 
     /** Forgets everything kept: the world rolls back, and the parcels start anew. */

@@ -1,5 +1,6 @@
 package io.orchard.cluster.node;
 
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import io.orchard.cluster.order.LineKey;
 import io.orchard.cluster.parcel.OwnedAgent;
 import io.orchard.cluster.parcel.Parcel;
@@ -11,12 +12,30 @@ import java.util.List;
 /**
  * What the tick asks a parcel entity ({@link ParcelEntity}) to do, one command per step, each
  * answered ({@link ParcelReply}) to the actor {@code replyTo} names (in Pekko's serialization format
- * of actor references), so that the tick knows when every parcel has done its part.
+ * of actor references), so that the tick knows when every parcel has done its part. The tick
+ * numbers its steps ({@link Step}), so that a step asked again is answered again, not done twice.
  */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, include = JsonTypeInfo.As.PROPERTY, property = "kind")
 public sealed interface ParcelCommand extends ClusterMessage {
 
     /** The actor the answer goes to, as Pekko's {@code ActorRefResolver} writes it. */
     String replyTo();
+
+    /**
+     * A command as a step of the tick, numbered. A parcel does a step once: the same step again is
+     * answered with the answer it had, which moves with the parcel between nodes. The tick asks
+     * again when an answer is late, because Pekko drops the commands it had buffered for a parcel
+     * in the middle of a move between nodes.
+     *
+     * @param number  the step's number, never the same for two steps of a cluster's life
+     * @param command what to do
+     */
+    record Step(long number, ParcelCommand command) implements ParcelCommand {
+        @Override
+        public String replyTo() {
+            return command.replyTo();
+        }
+    }
 
     /** Take these agents as own; answered {@link ParcelReply.Done}. */
     record Own(List<OwnedAgent> agents, String replyTo) implements ParcelCommand {}
@@ -94,8 +113,11 @@ public sealed interface ParcelCommand extends ClusterMessage {
         }
     }
 
-    /** What the keeper had of the parcel when it started here: the state, or null for none. */
-    record Restored(Parcel.State state) implements ParcelCommand {
+    /**
+     * What the keeper had of the parcel when it started here: the state, or null for none, and its
+     * last step's number and answer (0 and null for none).
+     */
+    record Restored(Parcel.State state, long lastStep, ParcelReply lastReply) implements ParcelCommand {
         @Override
         public String replyTo() {
             return null;

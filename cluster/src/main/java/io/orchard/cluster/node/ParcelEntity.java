@@ -34,7 +34,8 @@ import org.slf4j.LoggerFactory;
  * <p>When its node leaves, Pekko hands the parcel to another node: it gives what it holds to the
  * keeper (the tick, {@link TickSingleton}) and stops; started again elsewhere, it first asks the
  * keeper for that, and answers nothing until it has it. So a node may leave in the middle of a tick
- * and nothing of the game is lost.
+ * and nothing of the game is lost. Its last step's answer moves with it: a step the tick asks again
+ * (its command lost in the move) is answered, not done twice.
  */
 public final class ParcelEntity {
 
@@ -54,6 +55,9 @@ public final class ParcelEntity {
     private final ActorContext<ParcelCommand> context;
     private final ActorRefResolver resolver;
     private Parcel parcel;
+    /** The number of the last step done, 0 for none, and its answer. */
+    private long lastStep;
+    private ParcelReply lastReply;
 
     private ParcelEntity(String id, ParcelGrid grid, World world, SimulationConfig config,
                          ActorRef<TickCommand> keeper, ActorContext<ParcelCommand> context) {
@@ -97,6 +101,8 @@ public final class ParcelEntity {
                 .onMessage(ParcelCommand.Restored.class, restored -> {
                     if (restored.state() != null) {
                         parcel.restore(restored.state());
+                        lastStep = restored.lastStep();
+                        lastReply = restored.lastReply();
                         log.info("parcel {} taken up here with {} agents of its own", id,
                                 restored.state().own().size());
                     }
@@ -115,10 +121,18 @@ public final class ParcelEntity {
                     if (keeper == null) {
                         return Behaviors.stopped();
                     }
-                    keeper.tell(new TickCommand.Keep(id, parcel.state(), self()));
+                    keeper.tell(new TickCommand.Keep(id, parcel.state(), lastStep, lastReply, self()));
                     return Behaviors.receive(ParcelCommand.class)
                             .onMessage(ParcelCommand.Kept.class, kept -> Behaviors.stopped())
                             .build();
+                })
+                .onMessage(ParcelCommand.Step.class, step -> {
+                    if (step.number() != lastStep || lastReply == null) {
+                        lastReply = handle(step.command());
+                        lastStep = step.number();
+                    }
+                    resolver.<ParcelReply>resolveActorRef(step.replyTo()).tell(lastReply);
+                    return Behaviors.same();
                 })
                 .onAnyMessage(command -> {
                     if (command.replyTo() != null) { // a keeper's late answer needs none

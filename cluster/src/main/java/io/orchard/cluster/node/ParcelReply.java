@@ -1,11 +1,16 @@
 package io.orchard.cluster.node;
 
+import com.fasterxml.jackson.annotation.JsonTypeInfo;
 import io.orchard.cluster.parcel.Parcel;
 import io.orchard.server.sim.AgentHandover;
 import io.orchard.server.sim.FirstContact;
 import java.util.List;
 
-/** A parcel entity's answer to a {@link ParcelCommand}. */
+/**
+ * A parcel entity's answer to a {@link ParcelCommand}. Its kind travels with it, because a parcel's
+ * last answer moves between nodes with the parcel ({@link ParcelCommand.Step}).
+ */
+@JsonTypeInfo(use = JsonTypeInfo.Id.NAME, include = JsonTypeInfo.As.PROPERTY, property = "kind")
 public sealed interface ParcelReply extends ClusterMessage {
 
     /** Done, with nothing to say. */

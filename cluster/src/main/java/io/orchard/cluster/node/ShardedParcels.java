@@ -25,6 +25,9 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
+import java.util.concurrent.ThreadLocalRandom;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.BiFunction;
 import java.util.function.Function;
 import org.apache.pekko.actor.typed.ActorRef;
@@ -32,6 +35,8 @@ import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.ActorSystem;
 import org.apache.pekko.cluster.sharding.typed.javadsl.ClusterSharding;
 import org.apache.pekko.cluster.sharding.typed.javadsl.Entity;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * The parcels of a split game as Pekko sharded entities ({@link ParcelEntity}), wherever the cluster
@@ -42,10 +47,23 @@ public final class ShardedParcels implements Parcels {
 
     /** How long a step waits for a parcel's answer before the tick fails. */
     static final Duration STEP_TIMEOUT = Duration.ofSeconds(30);
+    /**
+     * How long a step waits for a parcel's answer before asking again: a command buffered for a
+     * parcel that moves between nodes is dropped by Pekko, and only asking again brings the answer.
+     */
+    static final Duration ASK_AGAIN = Duration.ofSeconds(2);
+
+    private static final Logger log = LoggerFactory.getLogger(ShardedParcels.class);
 
     private final ClusterSharding sharding;
     private final ActorRefResolver resolver;
     private final ParcelGrid grid;
+    /**
+     * The last step's number. It starts anywhere, so that a tick started again on another node does
+     * not number a step as one a parcel already did.
+     */
+    private final AtomicLong steps = new AtomicLong(ThreadLocalRandom.current().nextLong());
+    private final AtomicLong askedAgain = new AtomicLong();
     /** Fails every step under way at once when the game is rolled back: a parcel may never answer. */
     private volatile CompletableFuture<Object> aborted = new CompletableFuture<>();
 
@@ -78,25 +96,48 @@ public final class ShardedParcels implements Parcels {
         return new ShardedParcels(system, grid);
     }
 
-    /** Asks each parcel its command at once and waits for every answer, by parcel. */
+    /** Asks each parcel its command at once, as the tick's next step, and waits for every answer, by parcel. */
     @SuppressWarnings("unchecked")
     private <R extends ParcelReply> Map<ParcelId, R> ask(Collection<ParcelId> parcels,
                                                          Function<ParcelId, Function<String, ParcelCommand>> command) {
+        long step = steps.incrementAndGet();
+        long deadline = System.nanoTime() + STEP_TIMEOUT.toNanos();
+        CompletableFuture<Object> abort = aborted;
         Map<ParcelId, CompletableFuture<ParcelReply>> asked = new LinkedHashMap<>();
         for (ParcelId id : parcels) {
-            Function<String, ParcelCommand> make = command.apply(id);
-            asked.put(id, sharding.entityRefFor(ParcelEntity.TYPE, id.toString())
-                    .<ParcelReply>ask(replyTo -> make.apply(resolver.toSerializationFormat(replyTo)), STEP_TIMEOUT)
-                    .toCompletableFuture());
+            asked.put(id, ask(id, step, command.apply(id), deadline, abort));
         }
         Map<ParcelId, R> answers = new TreeMap<>();
-        CompletableFuture<Object> abort = aborted;
         try {
             asked.forEach((id, answer) -> answers.put(id, (R) CompletableFuture.anyOf(answer, abort).join()));
         } catch (CompletionException e) {
             throw new ParcelLost("a parcel did not answer: " + e.getCause().getMessage(), e.getCause());
         }
         return answers;
+    }
+
+    /** Asks one parcel the step, and again each time its answer is late, until the deadline. */
+    private CompletableFuture<ParcelReply> ask(ParcelId id, long step, Function<String, ParcelCommand> make,
+                                               long deadline, CompletableFuture<Object> abort) {
+        return sharding.entityRefFor(ParcelEntity.TYPE, id.toString())
+                .<ParcelReply>ask(replyTo -> new ParcelCommand.Step(step, make.apply(
+                        resolver.toSerializationFormat(replyTo))), ASK_AGAIN)
+                .toCompletableFuture()
+                .exceptionallyCompose(failure -> {
+                    Throwable cause = failure instanceof CompletionException ? failure.getCause() : failure;
+                    if (!(cause instanceof TimeoutException) || abort.isDone() || System.nanoTime() > deadline) {
+                        return CompletableFuture.failedFuture(cause);
+                    }
+                    askedAgain.incrementAndGet();
+                    log.warn("parcel {} did not answer step {} within {} ms: asked again", id, step,
+                            ASK_AGAIN.toMillis());
+                    return ask(id, step, make, deadline, abort);
+                });
+    }
+
+    /** How many times a parcel was asked a step again, its answer late. */
+    public long askedAgain() {
+        return askedAgain.get();
     }
 
     private <T> void tellEach(Map<ParcelId, T> what, BiFunction<T, String, ParcelCommand> command) {

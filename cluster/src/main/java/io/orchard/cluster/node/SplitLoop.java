@@ -45,6 +45,11 @@ final class SplitLoop implements Runnable {
     private volatile boolean stopped;
     /** How long each tick took, in wall-clock nanoseconds, from its start to its end. */
     private final List<Long> ticks = new ArrayList<>();
+    /**
+     * How long each tick's own work took: the tick without the wait for the agents' turns (lockstep)
+     * or for the next tick's time (realtime), what the cluster costs a tick.
+     */
+    private final List<Long> work = new ArrayList<>();
 
     SplitLoop(Games games, ObjLongConsumer<Phase> clock) {
         this.games = games;
@@ -55,9 +60,9 @@ final class SplitLoop implements Runnable {
         stopped = true;
     }
 
-    /** The tick time at this percentile so far, in milliseconds. */
-    private String percentile(int percent) {
-        List<Long> sorted = new ArrayList<>(ticks);
+    /** The time of {@code times} at this percentile so far, in milliseconds. */
+    private static String percentile(List<Long> times, int percent) {
+        List<Long> sorted = new ArrayList<>(times);
         sorted.sort(null);
         long nanos = sorted.isEmpty() ? 0 : sorted.get(Math.min(sorted.size() - 1, sorted.size() * percent / 100));
         return String.format(Locale.ROOT, "%.1f", nanos / 1e6);
@@ -116,6 +121,7 @@ final class SplitLoop implements Runnable {
         }
         long started = System.nanoTime();
         game.beginTick();
+        long begun = System.nanoTime();
         if (config.clock() == ClockMode.LOCKSTEP) {
             game.awaitTurns(config.lockstepDeadline());
         } else {
@@ -128,15 +134,19 @@ final class SplitLoop implements Runnable {
                 LockSupport.parkNanos(left);
             }
         }
+        long ending = System.nanoTime();
         game.endTick();
-        ticks.add(System.nanoTime() - started);
+        long ended = System.nanoTime();
+        ticks.add(ended - started);
+        work.add(begun - started + ended - ending);
         clock.accept(game.phase(), game.tick());
         if (game.phase() == Phase.OVER && !wasOver) {
             wasOver = true;
             long[] sent = ClusterSerializer.sent();
             log.info("the game is over at tick {}; across parcels' borders: {}; ticks p50 {} ms, p99 {} ms; "
-                    + "the tick's node sent {} messages, {} bytes to other nodes", game.tick(), game.counts(),
-                    percentile(50), percentile(99), sent[0], sent[1]);
+                    + "tick work p50 {} ms, p99 {} ms; the tick's node sent {} messages, {} bytes to other nodes",
+                    game.tick(), game.counts(), percentile(ticks, 50), percentile(ticks, 99), percentile(work, 50),
+                    percentile(work, 99), sent[0], sent[1]);
         }
     }
 }

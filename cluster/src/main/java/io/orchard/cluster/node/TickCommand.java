@@ -42,9 +42,11 @@ public sealed interface TickCommand extends ClusterMessage {
 
     /**
      * A parcel whose node leaves hands its state to the tick, as the parcels' keeper, and stops once
-     * told {@link ParcelCommand.Kept} at {@code parcel} (an actor reference in Pekko's format).
+     * told {@link ParcelCommand.Kept} at {@code parcel} (an actor reference in Pekko's format), with
+     * its last step's number and answer, so that the step asked again is not done twice.
      */
-    record Keep(String id, Parcel.State state, String parcel) implements TickCommand {}
+    record Keep(String id, Parcel.State state, long lastStep, ParcelReply lastReply, String parcel)
+            implements TickCommand {}
 
     /** A parcel started on a node asks the keeper for its state: {@link ParcelCommand.Restored}. */
     record Restore(String id, String parcel) implements TickCommand {}

@@ -1,0 +1,93 @@
+package io.orchard.cluster;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import io.orchard.protocol.message.GameOverMessage;
+import io.orchard.protocol.value.ClockMode;
+import io.orchard.server.WorldServer;
+import io.orchard.server.world.WorldGenerator;
+import io.orchard.server.world.WorldOptions;
+import io.orchard.server.world.scenario.ScenarioFile;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A node process that joins a cluster of two in the middle of a lockstep game, the paper's agents
+ * connected to the two first: Pekko moves parcels onto it (its rebalancing), each with what it holds,
+ * while the game runs, and the game's recording is one server's, byte for byte.
+ */
+class NodeJoinsTest {
+
+    private static final long SEED = 8;
+    private static final int AGENTS = 10;
+    private static final double SECONDS = 60;
+    private static final int FRUIT = 150;
+    /** A health line of a node that hosts parcels. */
+    private static final Pattern HOSTING = Pattern.compile("^node .* parcels [1-9]\\d* \\[");
+    private static final Pattern TAKEN_UP = Pattern.compile("parcel \\d+,\\d+ taken up here");
+    private static final Pattern LOST = Pattern.compile("was lost|UNREACHABLE|SBR took decision");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aNodeThatJoinsInTheMiddleOfAGameTakesParcelsOverAndNothingIsLost() throws Exception {
+        // More fruit than the paper's 30, so that the game does not end, all fruit collected, before
+        // Pekko moves parcels (a few every 10 s) onto the node that joins.
+        Path world = dir.resolve("world.json");
+        ScenarioFile.write(new WorldGenerator(new SplittableRandom(SEED), WorldOptions.DEFAULT.withFruit(FRUIT))
+                .scenario(), world);
+        Path single = dir.resolve("server.ndjson");
+        ExecutorService threads = Executors.newFixedThreadPool(AGENTS);
+        try {
+            try (WorldServer server = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP)
+                    .timeLimit(SECONDS).waitFor(AGENTS).lockstepDeadline(Duration.ofSeconds(20)).record(single)
+                    .scenario(world).start()) {
+                NodeLeavesTest.awaitEnds(NodeLeavesTest.play(threads, List.of(server.port())));
+                server.gameOver().get(1, TimeUnit.MINUTES);
+            }
+            Path recording = dir.resolve("cluster.ndjson");
+            try (NodeProcesses cluster = new NodeProcesses(List.of("--seed", String.valueOf(SEED), "--clock",
+                    "lockstep", "--time-limit", String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS),
+                    "--turn-deadline", "20", "--parcel-size", "25", "--down-after", "5", "--scenario", world.toString(),
+                    "--record", recording.toString()))) {
+                NodeProcesses.Node first = cluster.start(List.of());
+                List<String> join = List.of("--seed-nodes", "127.0.0.1:" + first.clusterPort());
+                NodeProcesses.Node second = cluster.start(join);
+                try {
+                    List<Future<GameOverMessage>> ends = NodeLeavesTest.play(threads,
+                            List.of(first.port(), second.port()));
+                    first.awaitTick(1, 120);
+                    NodeProcesses.Node third = cluster.start(join);
+                    third.await(HOSTING, 120);
+                    assertThat(Files.readString(recording)).as("the game was under way when parcels moved")
+                            .doesNotContain("\"type\":\"GameOver\"");
+                    NodeLeavesTest.awaitEnds(ends);
+                    assertThat(third.said()).as("the parcels the node that joined took up with their state")
+                            .anyMatch(line -> TAKEN_UP.matcher(line).find());
+                    List<String> all = new ArrayList<>(first.said());
+                    all.addAll(second.said());
+                    all.addAll(third.said());
+                    assertThat(all).as("no node was taken for lost").noneMatch(line -> LOST.matcher(line).find());
+                } catch (AssertionError | java.util.concurrent.ExecutionException e) {
+                    throw new AssertionError(e.getMessage() + cluster.said(), e);
+                }
+            }
+            assertThat(Files.readAllBytes(recording)).as("the cluster's recording, byte for byte")
+                    .isEqualTo(Files.readAllBytes(single));
+        } finally {
+            threads.shutdownNow();
+        }
+    }
+}
