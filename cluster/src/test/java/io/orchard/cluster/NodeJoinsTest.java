@@ -58,18 +58,15 @@ class NodeJoinsTest {
                 server.gameOver().get(1, TimeUnit.MINUTES);
             }
             Path recording = dir.resolve("cluster.ndjson");
-            try (NodeProcesses cluster = new NodeProcesses(List.of("--seed", String.valueOf(SEED), "--clock",
-                    "lockstep", "--time-limit", String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS),
-                    "--turn-deadline", "20", "--parcel-size", "25", "--down-after", "5", "--scenario", world.toString(),
-                    "--record", recording.toString()))) {
+            try (NodeProcesses cluster = new NodeProcesses(NodeProcesses.lockstep(SEED, SECONDS, AGENTS, "--scenario",
+                    world.toString(), "--record", recording.toString()))) {
                 NodeProcesses.Node first = cluster.start(List.of());
-                List<String> join = List.of("--seed-nodes", "127.0.0.1:" + first.clusterPort());
-                NodeProcesses.Node second = cluster.start(join);
+                NodeProcesses.Node second = cluster.join();
                 try {
                     List<Future<GameOverMessage>> ends = NodeLeavesTest.play(threads,
                             List.of(first.port(), second.port()));
                     first.awaitTick(1, 120);
-                    NodeProcesses.Node third = cluster.start(join);
+                    NodeProcesses.Node third = cluster.join();
                     third.await(HOSTING, 120);
                     assertThat(Files.readString(recording)).as("the game was under way when parcels moved")
                             .doesNotContain("\"type\":\"GameOver\"");

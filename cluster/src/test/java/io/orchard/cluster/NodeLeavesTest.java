@@ -79,14 +79,11 @@ class NodeLeavesTest {
                 server.gameOver().get(1, TimeUnit.MINUTES);
             }
             Path recording = dir.resolve("cluster.ndjson");
-            try (NodeProcesses cluster = new NodeProcesses(List.of("--seed", String.valueOf(SEED), "--clock",
-                    "lockstep", "--time-limit", String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS),
-                    "--turn-deadline", "20", "--parcel-size", "25", "--down-after", "5", "--record",
+            try (NodeProcesses cluster = new NodeProcesses(NodeProcesses.lockstep(SEED, SECONDS, AGENTS, "--record",
                     recording.toString()))) {
                 NodeProcesses.Node first = cluster.start(List.of());
-                List<String> join = List.of("--seed-nodes", "127.0.0.1:" + first.clusterPort());
-                NodeProcesses.Node second = cluster.start(join);
-                NodeProcesses.Node third = cluster.start(join);
+                NodeProcesses.Node second = cluster.join();
+                NodeProcesses.Node third = cluster.join();
                 try {
                     // All three up before the game starts: its parcels are placed on all three at its
                     // start, and none moves to a node that joins while it runs.

@@ -57,21 +57,30 @@ final class NodeProcesses implements AutoCloseable {
     }
 
     private final List<String> common;
+    private final String heap;
     private final List<Node> nodes = new ArrayList<>();
 
-    /** Nodes started with these options besides their ports and seed nodes. */
+    /** Nodes started with these options besides their ports and seed nodes, each with a heap of 512 MB. */
     NodeProcesses(List<String> common) {
+        this(common, "512m");
+    }
+
+    /** Nodes started with these options besides their ports and seed nodes, each with this heap ({@code -Xmx}). */
+    NodeProcesses(List<String> common, String heap) {
         this.common = List.copyOf(common);
+        this.heap = heap;
     }
 
     /** Starts a node with {@code options} besides the common ones; returns it once it listens. */
     Node start(List<String> options) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Xmx512m", "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(),
+                .toString(), "-Xmx" + heap, "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(),
                 "--port", "0", "--cluster-port", "0"));
         command.addAll(common);
         command.addAll(options);
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
+        // A test's JVM that ends abruptly (out of memory, say) leaves no node running behind it.
+        Runtime.getRuntime().addShutdownHook(new Thread(process::destroyForcibly));
         List<String> said = new CopyOnWriteArrayList<>();
         BlockingQueue<String> unread = new LinkedBlockingQueue<>();
         Thread reader = new Thread(() -> {
@@ -95,6 +104,23 @@ final class NodeProcesses implements AutoCloseable {
                 unread);
         nodes.set(nodes.size() - 1, node);
         return node;
+    }
+
+    /**
+     * The options of a lockstep game of {@code seed} for {@code agents} and {@code seconds}, in parcels
+     * of 25 units, a turn waited for 20 s and a silent node taken for lost after 5 s, then {@code more}.
+     */
+    static List<String> lockstep(long seed, double seconds, int agents, String... more) {
+        List<String> options = new ArrayList<>(List.of("--seed", String.valueOf(seed), "--clock", "lockstep",
+                "--time-limit", String.valueOf(seconds), "--wait-for", String.valueOf(agents), "--turn-deadline", "20",
+                "--parcel-size", "25", "--down-after", "5"));
+        options.addAll(List.of(more));
+        return options;
+    }
+
+    /** Starts a node that joins the cluster of the first node started. */
+    Node join() throws Exception {
+        return start(List.of("--seed-nodes", "127.0.0.1:" + nodes.get(0).clusterPort()));
     }
 
     /** Every node started, in order. */

@@ -11,7 +11,6 @@ import io.orchard.server.world.WorldGenerator;
 import io.orchard.server.world.WorldOptions;
 import io.orchard.server.world.scenario.ScenarioFile;
 import java.io.BufferedReader;
-import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -20,15 +19,13 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.SplittableRandom;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.AfterEach;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -56,37 +53,42 @@ class NodeProcessesTest {
      * node load, so that many agents play long enough to be measured.
      */
     private static final int FRUIT = Integer.getInteger("orchard.cluster.fruit", 0);
+    /**
+     * The world: {@code -Dorchard.cluster.world=benchmark} for the benchmark world (1,000 × 1,000
+     * units, 10,000 objects, 2,000 fruit) of the seed, written as a scenario file, else the paper's.
+     */
+    private static final boolean BENCHMARK_WORLD = "benchmark".equals(System.getProperty("orchard.cluster.world"));
+    /**
+     * The agents: {@code -Dorchard.cluster.agentKind=gatherer} for light agents that keep no maps
+     * ({@link Gatherer}), as many as a benchmark world takes; else the paper's five, in turn.
+     */
+    private static final boolean GATHERERS = "gatherer".equals(System.getProperty("orchard.cluster.agentKind"));
+    /**
+     * How long a lockstep tick waits for a turn, in seconds: {@code -Dorchard.cluster.turnDeadline},
+     * 20 unless set. A thousand agents' threads on two cores may need longer at the first tick.
+     */
+    private static final int TURN_DEADLINE = Integer.getInteger("orchard.cluster.turnDeadline", 20);
     /** Each node process's heap: {@code -Dorchard.cluster.nodeHeap}, 512m unless set. */
     private static final String NODE_HEAP = System.getProperty("orchard.cluster.nodeHeap", "512m");
     private static final Pattern LAST_TICK = Pattern.compile("\\{\"tick\":(\\d+),");
-    private static final Pattern LISTENING =
-            Pattern.compile("node listening for agents and viewers on [^:]+:(\\d+), cluster member at port (\\d+)");
     private static final Pattern COUNTS = Pattern.compile("handOvers=(\\d+), sightingsAcrossBorders=(\\d+)");
 
     @TempDir
     Path dir;
 
-    private final List<Process> nodes = new ArrayList<>();
-    private final List<BlockingQueue<String>> outputs = new ArrayList<>();
     /** Each node's CPU time when the agents started to connect, in nanoseconds. */
     private final List<Long> cpuBefore = new ArrayList<>();
     /** The options that load the world's scenario, if one was written. */
     private final List<String> world = new ArrayList<>();
 
-    @AfterEach
-    void stopTheNodes() throws InterruptedException {
-        for (Process node : nodes) {
-            node.destroy();
-        }
-        for (Process node : nodes) {
-            if (!node.waitFor(60, TimeUnit.SECONDS)) {
-                node.destroyForcibly();
-            }
-        }
-    }
-
     private static List<AgentController> agents() {
         List<AgentController> agents = new ArrayList<>();
+        if (GATHERERS) {
+            for (int i = 1; i <= AGENTS; i++) {
+                agents.add(new Gatherer("Gatherer" + i));
+            }
+            return agents;
+        }
         for (int i = 1; i <= AGENTS / Species.values().length; i++) {
             for (Species species : Species.values()) {
                 agents.add(species.create(species.agentName() + i));
@@ -116,54 +118,6 @@ class NodeProcessesTest {
         }
     }
 
-    /** Starts an {@code orchard node} in a JVM of its own; returns its gateway's and its cluster member's ports. */
-    private int[] node(List<String> options) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx" + NODE_HEAP, "-cp", System.getProperty("java.class.path"), NodeMain.class.getName(), "--port", "0",
-                "--cluster-port", "0", "--seed", String.valueOf(SEED), "--clock", "lockstep", "--time-limit",
-                String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS), "--turn-deadline", "20",
-                "--parcel-size", PARCEL));
-        command.addAll(world);
-        command.addAll(options);
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
-        nodes.add(process);
-        BlockingQueue<String> lines = new LinkedBlockingQueue<>();
-        outputs.add(lines);
-        Thread reader = new Thread(() -> {
-            try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(),
-                    StandardCharsets.UTF_8))) {
-                for (String line = in.readLine(); line != null; line = in.readLine()) {
-                    lines.add(line);
-                }
-            } catch (java.io.IOException e) {
-                lines.add("(output ended: " + e + ")");
-            }
-        });
-        reader.setDaemon(true);
-        reader.start();
-        String line = await(lines, LISTENING, 120);
-        Matcher matcher = LISTENING.matcher(line);
-        assertThat(matcher.find()).isTrue();
-        return new int[] {Integer.parseInt(matcher.group(1)), Integer.parseInt(matcher.group(2))};
-    }
-
-    /** The first line matching {@code pattern} within {@code seconds}, or a failure that shows what came. */
-    private static String await(BlockingQueue<String> lines, Pattern pattern, int seconds) throws InterruptedException {
-        List<String> seen = new ArrayList<>();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
-        while (System.nanoTime() < deadline) {
-            String line = lines.poll(100, TimeUnit.MILLISECONDS);
-            if (line != null) {
-                seen.add(line);
-                if (pattern.matcher(line).find()) {
-                    return line;
-                }
-            }
-        }
-        throw new AssertionError("no line like " + pattern + " within " + seconds + " s; the node said:\n"
-                + String.join("\n", seen));
-    }
-
     private static long cpu(Process node) {
         return node.info().totalCpuDuration().map(Duration::toNanos).orElse(0L);
     }
@@ -173,16 +127,17 @@ class NodeProcessesTest {
      * the game's end, per agent-tick of the game's {@code ticks}) and last health line, and the tick's
      * figures.
      */
-    private void measure(String over, long ticks) {
+    private void measure(List<NodeProcesses.Node> nodes, String over, long ticks) {
         List<String> said = new ArrayList<>();
         long inGame = 0;
         for (int i = 0; i < nodes.size(); i++) {
-            long used = cpu(nodes.get(i)) - cpuBefore.get(i);
+            Process node = nodes.get(i).process();
+            long used = cpu(node) - cpuBefore.get(i);
             inGame += used;
-            String cpu = nodes.get(i).info().totalCpuDuration().map(d -> d.toMillis() + " ms of CPU").orElse("?")
-                    + String.format(java.util.Locale.ROOT, ", %.0f ms in the game", used / 1e6);
+            String cpu = String.format(java.util.Locale.ROOT, "%d ms of CPU, %.0f ms in the game", cpu(node) / 1_000_000,
+                    used / 1e6);
             String health = "";
-            for (String line : outputs.get(i)) {
+            for (String line : nodes.get(i).said()) {
                 if (line.startsWith("node ")) {
                     health = line;
                 }
@@ -194,60 +149,96 @@ class NodeProcessesTest {
                 inGame / 1e3 / Math.max(1, ticks * AGENTS), over, String.join("\n", said));
     }
 
+    /** The last lines of a recording, read without holding all of it: a big game's is gigabytes. */
+    private static List<String> lastLines(Path file) throws java.io.IOException {
+        java.util.ArrayDeque<String> last = new java.util.ArrayDeque<>();
+        try (Stream<String> lines = Files.lines(file, StandardCharsets.UTF_8)) {
+            lines.forEach(line -> {
+                if (last.size() == 3) {
+                    last.removeFirst();
+                }
+                last.addLast(line);
+            });
+        }
+        return new ArrayList<>(last);
+    }
+
+    /** The first line, numbered, where two recordings differ, or empty. */
+    private static String firstDifferentLine(Path expected, Path actual) throws java.io.IOException {
+        try (BufferedReader one = Files.newBufferedReader(expected); BufferedReader other = Files.newBufferedReader(actual)) {
+            for (int number = 1; ; number++) {
+                String a = one.readLine();
+                String b = other.readLine();
+                if (a == null && b == null) {
+                    return "";
+                }
+                if (a == null || !a.equals(b)) {
+                    return "line " + number + ": the server's " + a + "\nthe cluster's " + b;
+                }
+            }
+        }
+    }
+
     @Test
     void threeNodeProcessesServeTheGameOneServerServesByteForByte() throws Exception {
         Path single = dir.resolve("server.ndjson");
-        List<AgentController> onServer = agents();
         WorldServer.Builder serving = WorldServer.builder().port(0).seed(SEED).clock(ClockMode.LOCKSTEP)
-                .timeLimit(SECONDS).waitFor(AGENTS).lockstepDeadline(Duration.ofSeconds(20)).record(single);
-        if (FRUIT > 0) {
+                .timeLimit(SECONDS).waitFor(AGENTS).lockstepDeadline(Duration.ofSeconds(TURN_DEADLINE)).record(single);
+        if (FRUIT > 0 || BENCHMARK_WORLD) {
             Path scenario = dir.resolve("world.json");
-            ScenarioFile.write(new WorldGenerator(new SplittableRandom(SEED), WorldOptions.DEFAULT.withFruit(FRUIT))
-                    .scenario(), scenario);
+            WorldOptions options = BENCHMARK_WORLD ? WorldOptions.BENCHMARK : WorldOptions.DEFAULT;
+            ScenarioFile.write(new WorldGenerator(new SplittableRandom(SEED),
+                    FRUIT > 0 ? options.withFruit(FRUIT) : options).scenario(), scenario);
             serving.scenario(scenario);
             world.addAll(List.of("--scenario", scenario.toString()));
         }
         try (WorldServer server = serving.start()) {
-            play(onServer, List.of(server.port()));
+            play(agents(), List.of(server.port())); // not held on to: a thousand agents take gigabytes
             server.gameOver().get(1, TimeUnit.MINUTES);
         }
 
         Path cluster = dir.resolve("cluster.ndjson");
-        int[] first = node(List.of("--record", cluster.toString()));
-        List<Integer> ports = new ArrayList<>(List.of(first[0]));
-        for (int i = 1; i < NODES; i++) {
-            ports.add(node(List.of("--seed-nodes", "127.0.0.1:" + first[1]))[0]);
-        }
-        List<AgentController> onCluster = agents();
-        Collections.reverse(onCluster);
-        nodes.forEach(node -> cpuBefore.add(cpu(node)));
-        try {
-            play(onCluster, ports);
-        } catch (AssertionError e) {
-            StringBuilder said = new StringBuilder();
-            for (BlockingQueue<String> output : outputs) {
-                said.append("\n--- a node said:\n");
-                output.forEach(line -> said.append(line).append('\n'));
+        List<String> common = new ArrayList<>(List.of("--seed", String.valueOf(SEED), "--clock", "lockstep",
+                "--time-limit", String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS), "--turn-deadline",
+                String.valueOf(TURN_DEADLINE), "--parcel-size", PARCEL));
+        common.addAll(world);
+        Matcher counts;
+        List<String> recorded;
+        try (NodeProcesses nodes = new NodeProcesses(common, NODE_HEAP)) {
+            NodeProcesses.Node first = nodes.start(List.of("--record", cluster.toString()));
+            List<Integer> ports = new ArrayList<>(List.of(first.port()));
+            for (int i = 1; i < NODES; i++) {
+                ports.add(nodes.start(List.of("--seed-nodes", "127.0.0.1:" + first.clusterPort())).port());
             }
-            throw new AssertionError(e.getMessage() + said, e);
+            List<AgentController> onCluster = agents();
+            Collections.reverse(onCluster);
+            nodes.nodes().forEach(node -> cpuBefore.add(cpu(node.process())));
+            try {
+                play(onCluster, ports);
+            } catch (AssertionError e) {
+                throw new AssertionError(e.getMessage() + nodes.said(), e);
+            }
+            String over = first.await(COUNTS, 60);
+            counts = COUNTS.matcher(over);
+            assertThat(counts.find()).isTrue();
+            Thread.sleep(6_000); // one more health line from every node, with what it sent
+            recorded = lastLines(cluster);
+            Matcher last = LAST_TICK.matcher(recorded.get(recorded.size() - 1));
+            measure(nodes.nodes(), over, last.find() ? Long.parseLong(last.group(1)) : 0);
         }
-        String over = await(outputs.get(0), COUNTS, 60);
-        Matcher counts = COUNTS.matcher(over);
-        assertThat(counts.find()).isTrue();
-        Thread.sleep(6_000); // one more health line from every node, with what it sent
-        List<String> recorded = Files.readAllLines(cluster);
-        Matcher last = LAST_TICK.matcher(recorded.get(recorded.size() - 1));
-        measure(over, last.find() ? Long.parseLong(last.group(1)) : 0);
 
-        assertThat(Files.readString(single, StandardCharsets.UTF_8)).as("no turn was missed")
-                .doesNotContain("\"dir\":\"missed\"").contains("\"type\":\"GameOver\"");
-        List<String> expected = Files.readAllLines(single);
-        List<String> actual = Files.readAllLines(cluster);
-        for (int i = 0; i < Math.min(expected.size(), actual.size()); i++) {
-            assertThat(actual.get(i)).as("line %d of the cluster's recording", i + 1).isEqualTo(expected.get(i));
+        try (Stream<String> lines = Files.lines(single, StandardCharsets.UTF_8)) {
+            assertThat(lines.filter(line -> line.contains("\"dir\":\"missed\"")).findFirst())
+                    .as("a missed turn in the server's recording").isEmpty();
         }
-        assertThat(Files.readAllBytes(cluster)).as("the cluster's recording, byte for byte")
-                .isEqualTo(Files.readAllBytes(single));
+        assertThat(recorded.get(recorded.size() - 1)).contains("\"type\":\"GameOver\"");
+        long mismatch = Files.mismatch(single, cluster);
+        if (mismatch != -1) {
+            assertThat(firstDifferentLine(single, cluster)).as("the first line where the recordings differ")
+                    .isEmpty();
+        }
+        assertThat(mismatch).as("where the cluster's recording first differs from the server's, byte for byte")
+                .isEqualTo(-1L);
         assertThat(Long.parseLong(counts.group(1))).as("agents walked from parcel to parcel").isPositive();
         assertThat(Long.parseLong(counts.group(2))).as("agents saw agents in other parcels").isPositive();
     }

@@ -42,14 +42,11 @@ class TickLeavesTest {
         Path recording = dir.resolve("cluster.ndjson");
         Path checkpoint = dir.resolve("game.json");
         Path tokens = dir.resolve("resume-tokens");
-        try (NodeProcesses cluster = new NodeProcesses(List.of("--seed", String.valueOf(SEED), "--clock", "lockstep",
-                "--time-limit", String.valueOf(SECONDS), "--wait-for", String.valueOf(AGENTS), "--turn-deadline", "20",
-                "--parcel-size", "25", "--checkpoint", checkpoint.toString(), "--checkpoint-every", "1",
-                "--down-after", "5", "--record", recording.toString()))) {
+        try (NodeProcesses cluster = new NodeProcesses(NodeProcesses.lockstep(SEED, SECONDS, AGENTS, "--checkpoint",
+                checkpoint.toString(), "--checkpoint-every", "1", "--record", recording.toString()))) {
             NodeProcesses.Node first = cluster.start(List.of());
-            List<String> join = List.of("--seed-nodes", "127.0.0.1:" + first.clusterPort());
-            NodeProcesses.Node second = cluster.start(join);
-            NodeProcesses.Node third = cluster.start(join);
+            NodeProcesses.Node second = cluster.join();
+            NodeProcesses.Node third = cluster.join();
             List<Integer> staying = List.of(second.port(), third.port());
             ExecutorService threads = Executors.newFixedThreadPool(AGENTS);
             try {

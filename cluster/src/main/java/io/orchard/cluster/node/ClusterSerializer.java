@@ -1,5 +1,9 @@
 package io.orchard.cluster.node;
 
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.LongAdder;
+import java.util.stream.Collectors;
 import org.apache.pekko.serialization.SerializerWithStringManifest;
 import tools.jackson.databind.DeserializationFeature;
 import tools.jackson.databind.json.JsonMapper;
@@ -20,6 +24,8 @@ public final class ClusterSerializer extends SerializerWithStringManifest {
     /** Messages and bytes this JVM's serializers wrote: what its node sent to other nodes. */
     private static final java.util.concurrent.atomic.AtomicLong MESSAGES = new java.util.concurrent.atomic.AtomicLong();
     private static final java.util.concurrent.atomic.AtomicLong BYTES = new java.util.concurrent.atomic.AtomicLong();
+    /** Bytes written by kind of message (a parcel's step by its command), to see where the traffic goes. */
+    private static final Map<String, LongAdder> BYTES_BY_KIND = new ConcurrentHashMap<>();
 
     private static final JsonMapper MAPPER = named(JsonMapper.builder()
             .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES), ParcelCommand.class, ParcelReply.class)
@@ -60,12 +66,21 @@ public final class ClusterSerializer extends SerializerWithStringManifest {
         byte[] bytes = MAPPER.writeValueAsBytes(message);
         MESSAGES.incrementAndGet();
         BYTES.addAndGet(bytes.length);
+        Object kind = message instanceof ParcelCommand.Step step ? step.command() : message;
+        BYTES_BY_KIND.computeIfAbsent(kind.getClass().getSimpleName(), name -> new LongAdder()).add(bytes.length);
         return bytes;
     }
 
     /** How many cluster messages, and how many bytes of them, this JVM has sent to other nodes so far. */
     public static long[] sent() {
         return new long[] {MESSAGES.get(), BYTES.get()};
+    }
+
+    /** How many bytes of each kind of cluster message this JVM has sent to other nodes so far, most first. */
+    public static String sentByKind() {
+        return BYTES_BY_KIND.entrySet().stream().map(entry -> Map.entry(entry.getKey(), entry.getValue().sum()))
+                .sorted(Map.Entry.<String, Long>comparingByValue().reversed())
+                .map(entry -> entry.getKey() + " " + entry.getValue()).collect(Collectors.joining(", "));
     }
 
     @Override

@@ -144,9 +144,9 @@ final class SplitLoop implements Runnable {
             wasOver = true;
             long[] sent = ClusterSerializer.sent();
             log.info("the game is over at tick {}; across parcels' borders: {}; ticks p50 {} ms, p99 {} ms; "
-                    + "tick work p50 {} ms, p99 {} ms; the tick's node sent {} messages, {} bytes to other nodes",
+                    + "tick work p50 {} ms, p99 {} ms; the tick's node sent {} messages, {} bytes to other nodes ({})",
                     game.tick(), game.counts(), percentile(ticks, 50), percentile(ticks, 99), percentile(work, 50),
-                    percentile(work, 99), sent[0], sent[1]);
+                    percentile(work, 99), sent[0], sent[1], ClusterSerializer.sentByKind());
         }
     }
 }
