@@ -3,7 +3,6 @@ package io.orchard.agents;
 import io.orchard.protocol.client.ProtocolConnection;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.EndTurnMessage;
-import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.Reply;
 import io.orchard.protocol.message.SayMessage;
 import io.orchard.protocol.message.ServerMessage;
@@ -73,7 +72,7 @@ final class Session {
         ProtocolConnection open = connection;
         if (open != null && open.isOpen() && open.welcome().protocolVersion() >= 2) {
             try {
-                open.send(KeepAliveMessage::new);
+                open.keepAlive();
             } catch (IOException e) {
                 log.debug("{}: could not send a keep-alive: {}", agent, e.getMessage());
             }

@@ -5,6 +5,7 @@ import io.orchard.protocol.ProtocolException;
 import io.orchard.protocol.ProtocolVersion;
 import io.orchard.protocol.message.ClientMessage;
 import io.orchard.protocol.message.ErrorMessage;
+import io.orchard.protocol.message.KeepAliveMessage;
 import io.orchard.protocol.message.HelloMessage;
 import io.orchard.protocol.message.LeanPerceptionMessage;
 import io.orchard.protocol.message.Reply;
@@ -236,6 +237,18 @@ public final class ProtocolConnection implements AutoCloseable {
         long seq = nextSeq.getAndIncrement();
         sendNow(message.apply(seq));
         return seq;
+    }
+
+    /**
+     * Sends a {@code KeepAlive} with {@code seq} 0, outside the numbering of the other messages
+     * (numbers need not be unique, and a keep-alive has no reply): a keep-alive goes when the wall
+     * clock says so, and numbering it would make the numbers of everything sent after it, which a
+     * recording keeps, depend on the wall clock.
+     *
+     * @throws IOException when the connection is closed or writing fails
+     */
+    public void keepAlive() throws IOException {
+        sendNow(new KeepAliveMessage(0));
     }
 
     /**
