@@ -33,9 +33,8 @@ class NodeJoinsTest {
     private static final int AGENTS = 10;
     private static final double SECONDS = 60;
     private static final int FRUIT = 150;
-    /** A health line of a node that hosts parcels. */
-    private static final Pattern HOSTING = Pattern.compile("^node .* parcels [1-9]\\d* \\[");
-    private static final Pattern TAKEN_UP = Pattern.compile("parcel \\d+,\\d+ taken up here");
+    /** The tick's node kept a parcel's state as Pekko moved it (onto the node that joined: it has none). */
+    private static final Pattern KEPT = Pattern.compile("parcel \\d+,\\d+ kept while it moves to another node");
     private static final Pattern LOST = Pattern.compile("was lost|UNREACHABLE|SBR took decision");
 
     @TempDir
@@ -67,12 +66,12 @@ class NodeJoinsTest {
                             List.of(first.port(), second.port()));
                     first.awaitTick(1, 120);
                     NodeProcesses.Node third = cluster.join();
-                    third.await(HOSTING, 120);
+                    // A parcel moved to the new node starts there when the tick next asks it a step,
+                    // which it does only while the parcel has agents: the hand-off is what shows.
+                    first.await(KEPT, 120);
                     assertThat(Files.readString(recording)).as("the game was under way when parcels moved")
                             .doesNotContain("\"type\":\"GameOver\"");
                     NodeLeavesTest.awaitEnds(ends);
-                    assertThat(third.said()).as("the parcels the node that joined took up with their state")
-                            .anyMatch(line -> TAKEN_UP.matcher(line).find());
                     List<String> all = new ArrayList<>(first.said());
                     all.addAll(second.said());
                     all.addAll(third.said());
@@ -81,8 +80,10 @@ class NodeJoinsTest {
                     throw new AssertionError(e.getMessage() + cluster.said(), e);
                 }
             }
-            assertThat(Files.readAllBytes(recording)).as("the cluster's recording, byte for byte")
-                    .isEqualTo(Files.readAllBytes(single));
+            assertThat(NodeProcessesTest.firstDifferentLine(single, recording))
+                    .as("the first line where the cluster's recording differs from the server's").isEmpty();
+            assertThat(Files.mismatch(single, recording)).as("the cluster's recording, byte for byte")
+                    .isEqualTo(-1L);
         } finally {
             threads.shutdownNow();
         }

@@ -164,7 +164,7 @@ class NodeProcessesTest {
     }
 
     /** The first line, numbered, where two recordings differ, or empty. */
-    private static String firstDifferentLine(Path expected, Path actual) throws java.io.IOException {
+    static String firstDifferentLine(Path expected, Path actual) throws java.io.IOException {
         try (BufferedReader one = Files.newBufferedReader(expected); BufferedReader other = Files.newBufferedReader(actual)) {
             for (int number = 1; ; number++) {
                 String a = one.readLine();

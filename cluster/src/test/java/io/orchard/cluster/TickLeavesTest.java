@@ -32,6 +32,10 @@ class TickLeavesTest {
     private static final Pattern ALL_UP = Pattern.compile("^node \\S+ +members up 3 ");
     private static final Pattern GOES_ON = Pattern.compile("the node that ran the tick left the cluster: the game "
             + "goes on from its checkpoint of tick (\\d+)");
+    private static final Pattern HEALTH = Pattern.compile("^node \\S+ +members up");
+    private static final Pattern OVER = Pattern.compile("the game is over at tick");
+    private static final Pattern CAME_AFTER_THE_END = Pattern.compile("the tick came to this node after the game was "
+            + "over");
     private static final Pattern LOST = Pattern.compile("was lost|UNREACHABLE|SBR took decision");
 
     @TempDir
@@ -81,6 +85,32 @@ class TickLeavesTest {
             } finally {
                 threads.shutdownNow();
             }
+        }
+    }
+
+    @Test
+    void theTicksNodeStoppedAfterTheGameLeavesItsRecordingWhole() throws Exception {
+        Path recording = dir.resolve("over.ndjson");
+        ExecutorService threads = Executors.newFixedThreadPool(AGENTS);
+        try (NodeProcesses cluster = new NodeProcesses(NodeProcesses.lockstep(SEED, 3, AGENTS, "--record",
+                recording.toString()))) {
+            NodeProcesses.Node first = cluster.start(List.of());
+            NodeProcesses.Node second = cluster.join();
+            try {
+                NodeLeavesTest.awaitEnds(NodeLeavesTest.play(threads, List.of(first.port(), second.port())));
+                first.await(OVER, 60);
+                byte[] played = Files.readAllBytes(recording);
+                assertThat(new String(played, java.nio.charset.StandardCharsets.UTF_8)).contains("\"type\":\"GameOver\"");
+                assertThat(first.process().toHandle().destroy()).as("SIGTERM sent").isTrue();
+                second.await(CAME_AFTER_THE_END, 180);
+                second.await(HEALTH, 30); // said after the tick's start there, which would open the recording
+                assertThat(Files.readAllBytes(recording)).as("the recording, after the tick moved to the other node")
+                        .isEqualTo(played);
+            } catch (AssertionError | java.util.concurrent.ExecutionException e) {
+                throw new AssertionError(e.getMessage() + cluster.said(), e);
+            }
+        } finally {
+            threads.shutdownNow();
         }
     }
 

@@ -115,6 +115,11 @@ public final class Gateway implements Inbox {
         return epoch >= 0 && (phase == GamePhase.RUNNING || phase == GamePhase.PAUSED);
     }
 
+    /** Whether the tick last heard had played its game to the end. */
+    public boolean heardTheGameOver() {
+        return epoch >= 0 && phase == GamePhase.OVER;
+    }
+
     /** The tick the game is at, as the tick last said. */
     public long tick() {
         return clockTick;

@@ -6,6 +6,8 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.apache.pekko.actor.typed.ActorRefResolver;
 import org.apache.pekko.actor.typed.Behavior;
 import org.apache.pekko.actor.typed.javadsl.Behaviors;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * Keeps what parcels hold while Pekko moves them to another node ({@link ParcelEntity}): a parcel
@@ -14,6 +16,8 @@ import org.apache.pekko.actor.typed.javadsl.Behaviors;
  * ({@link #behavior}). One actor's alone.
  */
 public final class Keeper {
+
+    private static final Logger log = LoggerFactory.getLogger(Keeper.class);
 
     private final ActorRefResolver resolver;
     private final AtomicLong takenUp;
@@ -45,6 +49,9 @@ public final class Keeper {
     /** A parcel whose node leaves: its state is kept, and it is told so, to stop. */
     void keep(TickCommand.Keep keep) {
         kept.put(keep.id(), keep);
+        // Said, because a parcel with no agents of its own may start again elsewhere only much later.
+        log.info("parcel {} kept while it moves to another node, with {} agents of its own", keep.id(),
+                keep.state().own().size());
         resolver.<ParcelCommand>resolveActorRef(keep.parcel()).tell(new ParcelCommand.Kept());
     }
 

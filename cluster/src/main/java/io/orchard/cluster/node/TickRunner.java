@@ -46,6 +46,8 @@ final class TickRunner implements SplitLoop.Games {
     private final SplitLoop loop;
     private final Thread thread;
     private Recorder recorder = Recorder.NONE;
+    /** Whether this cluster's game was played to its end before the tick came here: nothing more is recorded. */
+    private boolean recordingDone;
     private volatile long epoch;
     /** Why the game must roll back before the next step, or null. */
     private volatile String rollBack;
@@ -74,9 +76,16 @@ final class TickRunner implements SplitLoop.Games {
 
     /**
      * Starts the game: from the cluster-wide checkpoint when a tick (the {@code lastEpoch}-th) had a
-     * game under way before on this cluster, else from {@code resume} when given, else new.
+     * game under way before on this cluster, else from {@code resume} when given, else new. When the
+     * tick before had played its game to the end ({@code gameOver}), the new game is not recorded:
+     * the recording of the game played is whole, and must not be written over.
      */
-    void start(long lastEpoch, boolean gameUnderWay, Path resume) {
+    void start(long lastEpoch, boolean gameUnderWay, boolean gameOver, Path resume) {
+        recordingDone = gameOver;
+        if (gameOver) {
+            log.info("the tick came to this node after the game was over: the recording stays as it was, and "
+                    + "no other game is recorded");
+        }
         epoch = lastEpoch + 1;
         if (checkpointFile != null) {
             try {
@@ -158,7 +167,7 @@ final class TickRunner implements SplitLoop.Games {
     }
 
     private Recorder records(boolean goingOn) {
-        recorder = making.records().apply(goingOn);
+        recorder = recordingDone ? Recorder.NONE : making.records().apply(goingOn);
         return recorder;
     }
 

@@ -65,7 +65,8 @@ public final class TickSingleton {
             Cluster.get(context.getSystem()).subscriptions().tell(Subscribe.create(
                     context.messageAdapter(ClusterEvent.MemberRemoved.class, TickCommand.MemberGone::new),
                     ClusterEvent.MemberRemoved.class));
-            runner.start(setup.local().epoch(), setup.local().heardAGameUnderWay(), setup.resume());
+            runner.start(setup.local().epoch(), setup.local().heardAGameUnderWay(), setup.local().heardTheGameOver(),
+                    setup.resume());
             Map<Long, RemoteSession> sessions = new HashMap<>();
             Keeper keeper = new Keeper(resolver, setup.takenUp());
             return Behaviors.receive(TickCommand.class)
