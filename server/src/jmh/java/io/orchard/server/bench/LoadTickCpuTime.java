@@ -1,10 +1,8 @@
 package io.orchard.server.bench;
 
-import io.orchard.protocol.message.ErrorMessage;
 import io.orchard.protocol.message.MoveMessage;
 import io.orchard.protocol.message.PerceptionRequestMessage;
 import io.orchard.protocol.message.RegisterMessage;
-import io.orchard.protocol.message.ServerMessage;
 import io.orchard.protocol.value.Body;
 import io.orchard.protocol.value.ClockMode;
 import io.orchard.protocol.value.Gripper;
@@ -12,9 +10,6 @@ import io.orchard.protocol.value.Role;
 import io.orchard.protocol.value.Sight;
 import io.orchard.protocol.value.Vec3;
 import io.orchard.server.sim.BodyLimits;
-import io.orchard.server.sim.ClientSession;
-import io.orchard.server.sim.EncodedLine;
-import io.orchard.server.sim.Percept;
 import io.orchard.server.sim.Recorder;
 import io.orchard.server.sim.Simulation;
 import io.orchard.server.sim.SimulationConfig;
@@ -38,50 +33,6 @@ import java.util.SplittableRandom;
  */
 public final class LoadTickCpuTime {
 
-    /** An agent's connection: remembers where the agent was last perceived. */
-    private static final class Client implements ClientSession {
-        private final long id;
-        private final Role role;
-        Vec3 seen;
-
-        Client(long id, Role role) {
-            this.id = id;
-            this.role = role;
-        }
-
-        @Override
-        public long id() {
-            return id;
-        }
-
-        @Override
-        public Role role() {
-            return role;
-        }
-
-        @Override
-        public void send(Percept percept) {
-            seen = percept.position();
-        }
-
-        @Override
-        public void send(ServerMessage message) {}
-
-        @Override
-        public void send(EncodedLine line) {}
-
-        @Override
-        public void flush() {}
-
-        @Override
-        public void close(ErrorMessage last) {}
-
-        @Override
-        public boolean isOpen() {
-            return true;
-        }
-    }
-
     private LoadTickCpuTime() {}
 
     /** Runs the rounds and prints them. */
@@ -92,12 +43,12 @@ public final class LoadTickCpuTime {
                 2026, "bench", Recorder.NONE, List.of());
         Body body = new Body(0.5, 1.5, 10, new Gripper("hands", 0.6, 0, 1.5), new Sight(50, Math.toRadians(120)));
         for (int i = 0; i < 5; i++) {
-            sim.connected(new Client(100_000 + i, Role.VIEWER));
+            sim.connected(new NullSession(100_000 + i, Role.VIEWER));
         }
-        List<Client> clients = new ArrayList<>();
+        List<NullSession> clients = new ArrayList<>();
         long[] seq = {0};
         for (int i = 0; i < agents; i++) {
-            Client client = new Client(i + 1, Role.AGENT);
+            NullSession client = new NullSession(i + 1, Role.AGENT);
             clients.add(client);
             sim.connected(client);
             sim.received(client, new RegisterMessage(++seq[0], "A" + i, body, null));
@@ -109,7 +60,7 @@ public final class LoadTickCpuTime {
         CpuRounds.run("load test's tick of " + agents + " agents", () -> {
             sim.beginTick();
             for (int i = 0; i < agents; i++) {
-                Client client = clients.get(i);
+                NullSession client = clients.get(i);
                 if (client.seen != null) {
                     Vec3 at = client.seen;
                     sim.received(client, new MoveMessage(++seq[0], "A" + i, at, Vec3.ground(
